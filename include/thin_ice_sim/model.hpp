@@ -1,0 +1,77 @@
+// The model a backend steps: fixed cell geometry, bond rest data and the constants of every law,
+// built once from Params and the sheet (data flows scenario -> params + sheet -> model -> backend).
+#pragma once
+
+#include <vector>
+
+#include "thin_ice_sim/ice_sheet.hpp"
+#include "thin_ice_sim/params.hpp"
+#include "thin_ice_sim/physics/bond.hpp"
+#include "thin_ice_sim/physics/contact.hpp"
+#include "thin_ice_sim/physics/integrate.hpp"
+#include "thin_ice_sim/physics/plane_contact.hpp"
+#include "thin_ice_sim/physics/water.hpp"
+
+namespace thin_ice {
+
+/// A cell may touch at most this many structure panels at once (checked by buildModel).
+constexpr int kMaxPanelsPerCell = 4;
+
+/// Constants of every law, precomputed from Params (all SI).
+struct ModelConstants {
+  ContactConstants contact;
+  BondConstants bond;
+  WaterConstants water;
+  PlaneContactConstants structure;
+  PlaneContactConstants pusher;
+  PlaneContactConstants bottom;
+  PlaneContactConstants wall;
+  RigidPlane structure_face;       ///< the inclined face (outward normal towards the ice)
+  double structure_top_z;          ///< [m] top of the face
+  double structure_y_min;          ///< [m] first panel's left edge
+  double panel_width;              ///< [m]
+  int panels;
+  double calibration_factor;       ///< alpha, Eq. (18)
+  bool bottom_enabled;
+  double bottom_x_start;           ///< [m] the false bottom covers x >= this
+  double bottom_z;                 ///< [m] its height (negative)
+  bool walls_enabled;
+  double wall_half_width;          ///< [m] walls at y = +-this
+  double wall_x_start;             ///< [m] walls from this x on (side panels only: toe - length)
+  double time_step;                ///< dt [s]
+  double mean_edge_length;         ///< l-bar [m] of Algorithm 1
+  double rebuild_displacement;     ///< [m] rebuild when a cell moved farther since the last one
+  double rebuild_rotation;         ///< [rad] ... or turned more
+  int max_steps_between_rebuilds;  ///< N_iter
+  double search_radius;            ///< [m] centroid distance under which a pair is a candidate
+};
+
+struct Model {
+  int cell_count = 0;
+  // Cell geometry, (cells x kMaxPolygonVertices) body-frame vertex offsets [m] about the centroid.
+  std::vector<double> vertex_x, vertex_y;
+  std::vector<int> vertex_count;        ///< (cells)
+  std::vector<double> area;             ///< (cells) [m^2]
+  std::vector<double> mass;             ///< (cells) [kg]
+  std::vector<double> inertia;          ///< (cells) yaw inertia rho h J [kg m^2]
+  std::vector<double> radius;           ///< (cells) farthest vertex from the centroid [m]
+  // Bonds, (bonds): the two cells (i < j) and what they remember from t = 0.
+  std::vector<int> bond_i, bond_j;
+  std::vector<BondRest> bond_rest;
+  // Initial state.
+  std::vector<CellMotion> initial;      ///< (cells) at rest at the floating draft
+  double initial_pusher_x = 0.0;        ///< [m]
+  double initial_pusher_velocity = 0.0; ///< [m/s]
+  ModelConstants constants{};
+  double critical_time_step = 0.0;      ///< [s] of the stiffest spring, damping included
+};
+
+/// Builds the model. Throws ScenarioError (numerics.time_step) when dt exceeds
+/// critical_step_safety x the critical time step.
+Model buildModel(const Params& params, const IceSheet& sheet, const std::string& source);
+
+/// Critical time step [s] of the model's stiffest spring (bonds, contacts, structure, pusher),
+/// for symplectic Euler with damping ratio zeta: dt_c = (2 / omega_max)(sqrt(1 + zeta^2) - zeta).
+double criticalTimeStep(const Model& model, const Params& params);
+
+}  // namespace thin_ice

@@ -1,0 +1,38 @@
+// Scenario files: commented YAML (config/scenarios/*.yaml) read once, validated, and turned into
+// the core's Params. Configuration lives at the edges; the engine never sees YAML.
+#pragma once
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "thin_ice_sim/params.hpp"
+
+namespace thin_ice {
+
+/// A scenario that cannot be loaded. what() is one line: "FILE: KEY: what is wrong; allowed: ...".
+class ScenarioError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Scenario {
+  std::string name;         ///< file stem, e.g. "M-2"
+  std::string source;       ///< path the scenario was read from ("" when built in code)
+  Params params;
+  std::vector<std::string> overrides;  ///< "section.key=value" applied after the file
+  std::string hash;         ///< 16 hex digits of a hash of the file text and the overrides
+};
+
+/// Reads `path`, applies `overrides` ("section.key=value", as the runner's --set), validates
+/// every value, and returns the scenario. Throws ScenarioError naming the file, the key, the
+/// value and what is allowed on: unknown section or key, missing required key, wrong type,
+/// non-physical value (h <= 0, nu outside [0, 0.5), negative density, cell size below the
+/// thickness, ...). Nothing is simulated or written when it throws.
+Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides = {});
+
+/// Checks the physical and numerical ranges of `params` (everything that can be checked without
+/// building the sheet); `source` prefixes the message. Throws ScenarioError.
+void validateParams(const Params& params, const std::string& source);
+
+}  // namespace thin_ice

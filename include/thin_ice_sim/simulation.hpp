@@ -1,0 +1,109 @@
+// The Simulation API shared by the ROS node and the command-line runner: load a scenario, step,
+// command the pusher, pause/reset, read cells, bonds and loads.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "thin_ice_sim/ice_sheet.hpp"
+#include "thin_ice_sim/params.hpp"
+#include "thin_ice_sim/scenario.hpp"
+
+namespace thin_ice {
+
+enum class BackendKind { kCpu, kCuda, kAuto };
+
+/// Parses "cpu", "cuda" or "auto"; throws std::invalid_argument naming `key` otherwise.
+BackendKind parseBackendKind(const std::string& text, const std::string& key);
+
+/// Loads on the structure at one instant (the output of the model, Eqs. 17-18).
+struct LoadSample {
+  double time = 0.0;                   ///< [s] simulated time
+  double pushed_length = 0.0;          ///< [m] distance the pusher has moved
+  double horizontal_raw = 0.0;         ///< F of Eq. (17) [N], +x (ice pushing the structure)
+  double horizontal_calibrated = 0.0;  ///< F_cal = alpha F, Eq. (18) [N]
+  double vertical_raw = 0.0;           ///< [N], +z
+  double lateral_raw = 0.0;            ///< [N], +y
+  std::vector<double> panel_horizontal;  ///< (panels) raw x-load per panel [N]
+  std::vector<double> panel_vertical;    ///< (panels) raw z-load per panel [N]
+  std::vector<double> panel_lateral;     ///< (panels) raw y-load per panel [N]
+  double pusher_force = 0.0;           ///< [N] force the pusher exerts on the ice, +x
+  int intact_bonds = 0;
+  int broken_bonds = 0;
+  int contacts = 0;                    ///< DEM contacts with positive overlap in the last step
+};
+
+/// One cell as the node and the runner see it.
+struct CellSnapshot {
+  double x, y, z, yaw;     ///< [m], [m], [m], [rad]
+  double vx, vy, vz, wz;   ///< [m/s], [rad/s]
+  bool in_intact_sheet;    ///< still bonded to at least one neighbour
+};
+
+class Backend;
+struct Model;
+
+class Simulation {
+ public:
+  /// Builds the sheet, the bonds and the backend. Throws ScenarioError when the time step
+  /// exceeds the stable one (the message gives the critical step), std::runtime_error when the
+  /// CUDA backend is asked for and unavailable.
+  Simulation(const Scenario& scenario, BackendKind backend);
+  ~Simulation();
+  Simulation(const Simulation&) = delete;
+  Simulation& operator=(const Simulation&) = delete;
+
+  /// Takes `steps` time steps (also while paused: this is the single-step service).
+  void step(long steps);
+  /// Advances by `span` seconds of simulated time (rounded to whole steps); nothing when paused.
+  void advance(double span);
+
+  void setPusherVelocity(double velocity);  ///< [m/s], applied from the next step
+  double pusherVelocity() const;
+  void pause() { paused_ = true; }
+  void resume() { paused_ = false; }
+  bool paused() const { return paused_; }
+  /// Back to t = 0 with the same sheet (same seed) and the scenario's pusher velocity.
+  void reset();
+
+  double time() const;
+  double timeStep() const;
+  double criticalTimeStep() const;  ///< [s] of the stiffest spring (for reports)
+  double pushedLength() const;
+  double pusherPosition() const;    ///< [m] x of the plate
+  long stepCount() const;
+
+  /// Loads averaged over the steps of the last step()/advance() call (an output interval), so
+  /// that a sampled record is not aliased by the contact noise of single steps.
+  LoadSample loads() const;
+  /// Current cell states (downloads from the device when the backend is on the GPU).
+  std::vector<CellSnapshot> cells() const;
+  /// World-frame polygon vertices of cell k at its current pose.
+  std::vector<Vec2> cellPolygon(int k) const;
+
+  int cellCount() const;
+  const Params& params() const { return scenario_.params; }
+  const Scenario& scenario() const { return scenario_; }
+  const IceSheet& sheet() const { return sheet_; }
+  std::string backendName() const;
+  /// One line on how the backend was chosen (e.g. why `auto` fell back to the CPU).
+  const std::string& backendNote() const { return backend_note_; }
+
+  /// False after a numerical blow-up (non-finite state or runaway speed); the simulation then
+  /// refuses to step until reset() and lastError() says what happened.
+  bool healthy() const { return last_error_.empty(); }
+  const std::string& lastError() const { return last_error_; }
+
+ private:
+  Scenario scenario_;
+  IceSheet sheet_;
+  std::unique_ptr<Model> model_;
+  std::unique_ptr<Backend> backend_;
+  std::string backend_note_;
+  double pusher_velocity_ = 0.0;
+  bool paused_ = false;
+  std::string last_error_;
+};
+
+}  // namespace thin_ice

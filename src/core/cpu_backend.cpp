@@ -1,0 +1,414 @@
+// CPU backend. One step (Algorithm 1, inner loop body):
+//   world polygons and bounding boxes of every cell          (parallel over cells)
+//   RMIB bond forces and failure                              (parallel over bonds)   Eqs. 8-13
+//   DEM contact forces of the candidate pairs                 (parallel over pairs)   Eqs. 1-4
+//   per cell: gather bond and contact forces in a fixed order, water, structure, pusher,
+//   bottom and walls, then symplectic Euler                   (parallel over cells)   Eqs. 14-17
+//   structure loads summed in cell order                      (serial, touching cells only)
+//   rebuild the candidate pairs when a cell moved > 0.1 l-bar, turned > delta_rot, a bond broke,
+//   or N_iter steps passed                                    (Algorithm 1, lines 14-17)
+// Pair forces are stored per pair and gathered per cell through fixed index lists, so the result
+// is bit-identical for any number of threads.
+#include "cpu_backend.hpp"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "thin_ice_sim/neighbour_search.hpp"
+
+namespace thin_ice {
+namespace {
+
+constexpr int kV = kMaxPolygonVertices;
+/// A cell faster than this has blown up [m/s] (the pusher moves at centimetres per second).
+constexpr double kRunawaySpeed = 50.0;
+
+struct StructureContact {
+  int first_panel;
+  int panel_count;
+  double fx[kMaxPanelsPerCell], fy[kMaxPanelsPerCell], fz[kMaxPanelsPerCell];  ///< on the structure [N]
+};
+
+/// Index lists: for each cell, the entries (pair index, side) of the pairs it belongs to.
+struct Incidence {
+  std::vector<int> offsets;  ///< (cells + 1)
+  std::vector<int> entries;  ///< 2 * pair + (1 if the cell is j else 0)
+
+  void build(int cells, const std::vector<int>& first, const std::vector<int>& second) {
+    offsets.assign(cells + 1, 0);
+    for (size_t p = 0; p < first.size(); ++p) {
+      ++offsets[first[p] + 1];
+      ++offsets[second[p] + 1];
+    }
+    for (int c = 0; c < cells; ++c) offsets[c + 1] += offsets[c];
+    entries.assign(offsets[cells], 0);
+    std::vector<int> cursor(offsets.begin(), offsets.end() - 1);
+    for (size_t p = 0; p < first.size(); ++p) {  // pair order: each cell's list is sorted
+      entries[cursor[first[p]]++] = 2 * static_cast<int>(p);
+      entries[cursor[second[p]]++] = 2 * static_cast<int>(p) + 1;
+    }
+  }
+};
+
+class CpuBackend final : public Backend {
+ public:
+  CpuBackend(const Model& model, int threads) : model_(model), threads_(threads > 0 ? threads : omp_get_max_threads()) {
+    const int n = model_.cell_count;
+    world_.resize(static_cast<size_t>(n) * kV);
+    box_.resize(static_cast<size_t>(n) * 4);
+    structure_.resize(n);
+    pusher_fx_.resize(n);
+    bond_force_.resize(model_.bond_rest.size());
+    bond_incidence_.build(n, model_.bond_i, model_.bond_j);
+    reset();
+  }
+
+  std::string name() const override { return "cpu"; }
+
+  void reset() override {
+    motion_ = model_.initial;
+    bond_broken_.assign(model_.bond_rest.size(), 0);
+    broken_count_ = 0;
+    time_ = 0.0;
+    steps_ = 0;
+    pusher_x_ = model_.initial_pusher_x;
+    health_error_.clear();
+    loads_ = LoadSample{};
+    rebuild_requested_ = true;
+  }
+
+  void step(long steps, double pusher_velocity) override {
+    const ModelConstants& c = model_.constants;
+    LoadSample sum;
+    sum.panel_horizontal.assign(c.panels, 0.0);
+    sum.panel_vertical.assign(c.panels, 0.0);
+    sum.panel_lateral.assign(c.panels, 0.0);
+    long taken = 0;
+    for (long s = 0; s < steps && health_error_.empty(); ++s) {
+      if (rebuild_requested_ || needsRebuild()) rebuildContacts();
+      stepOnce(pusher_velocity, sum);
+      ++taken;
+    }
+    if (taken > 0) {
+      const double inv = 1.0 / static_cast<double>(taken);
+      sum.horizontal_raw *= inv;
+      sum.vertical_raw *= inv;
+      sum.lateral_raw *= inv;
+      sum.pusher_force *= inv;
+      for (int p = 0; p < c.panels; ++p) {
+        sum.panel_horizontal[p] *= inv;
+        sum.panel_vertical[p] *= inv;
+        sum.panel_lateral[p] *= inv;
+      }
+    }
+    sum.horizontal_calibrated = c.calibration_factor * sum.horizontal_raw;
+    sum.time = time_;
+    sum.pushed_length = pusher_x_ - model_.initial_pusher_x;
+    sum.broken_bonds = broken_count_;
+    sum.intact_bonds = static_cast<int>(model_.bond_rest.size()) - broken_count_;
+    sum.contacts = last_contacts_;
+    loads_ = sum;
+  }
+
+  double time() const override { return time_; }
+  long stepCount() const override { return steps_; }
+  double pusherPosition() const override { return pusher_x_; }
+  LoadSample loads() const override { return loads_; }
+  std::string healthError() const override { return health_error_; }
+
+  std::vector<CellSnapshot> cells() const override {
+    std::vector<CellSnapshot> out(model_.cell_count);
+    std::vector<unsigned char> bonded(model_.cell_count, 0);
+    for (size_t b = 0; b < bond_broken_.size(); ++b) {
+      if (!bond_broken_[b]) bonded[model_.bond_i[b]] = bonded[model_.bond_j[b]] = 1;
+    }
+    for (int k = 0; k < model_.cell_count; ++k) {
+      const CellMotion& m = motion_[k];
+      out[k] = {m.x, m.y, m.z, m.yaw, m.vx, m.vy, m.vz, m.wz, bonded[k] != 0};
+    }
+    return out;
+  }
+
+ private:
+  BodyState body(int k) const {
+    const CellMotion& m = motion_[k];
+    return {{m.x, m.y}, m.z, {m.vx, m.vy}, m.vz, m.wz, model_.mass[k]};
+  }
+
+  bool needsRebuild() const {
+    const ModelConstants& c = model_.constants;
+    if (steps_since_rebuild_ >= c.max_steps_between_rebuilds) return true;
+    const int n = model_.cell_count;
+    const double limit2 = c.rebuild_displacement * c.rebuild_displacement;
+    bool exceeded = false;
+#pragma omp parallel for num_threads(threads_) schedule(static) reduction(|| : exceeded)
+    for (int k = 0; k < n; ++k) {
+      const double dx = motion_[k].x - reference_[k].x, dy = motion_[k].y - reference_[k].y;
+      exceeded = exceeded || dx * dx + dy * dy > limit2 ||
+                 std::fabs(motion_[k].yaw - reference_[k].yaw) > c.rebuild_rotation;
+    }
+    return exceeded;
+  }
+
+  /// Candidate pairs within the search radius that are not held by an intact bond.
+  void rebuildContacts() {
+    const int n = model_.cell_count;
+    std::vector<Vec2> centres(n);
+    for (int k = 0; k < n; ++k) centres[k] = {motion_[k].x, motion_[k].y};
+    const std::vector<CandidatePair>& candidates = search_.findPairs(centres, model_.constants.search_radius);
+    contact_i_.clear();
+    contact_j_.clear();
+    for (const CandidatePair& p : candidates) {
+      if (hasIntactBond(p.i, p.j)) continue;
+      contact_i_.push_back(p.i);
+      contact_j_.push_back(p.j);
+    }
+    contact_force_.resize(contact_i_.size());
+    contact_incidence_.build(n, contact_i_, contact_j_);
+    reference_ = motion_;
+    steps_since_rebuild_ = 0;
+    rebuild_requested_ = false;
+  }
+
+  bool hasIntactBond(int i, int j) const {
+    for (int e = bond_incidence_.offsets[i]; e < bond_incidence_.offsets[i + 1]; ++e) {
+      const int b = bond_incidence_.entries[e] >> 1;
+      if (!bond_broken_[b] && (model_.bond_i[b] == j || model_.bond_j[b] == j)) return true;
+    }
+    return false;
+  }
+
+  void updateWorldPolygons() {
+    const int n = model_.cell_count;
+#pragma omp parallel for num_threads(threads_) schedule(static)
+    for (int k = 0; k < n; ++k) {
+      const CellMotion& m = motion_[k];
+      const double cs = std::cos(m.yaw), sn = std::sin(m.yaw);
+      double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+      for (int v = 0; v < model_.vertex_count[k]; ++v) {
+        const Vec2 offset = {model_.vertex_x[k * kV + v], model_.vertex_y[k * kV + v]};
+        const Vec2 w = Vec2{m.x, m.y} + rotate(offset, cs, sn);
+        world_[static_cast<size_t>(k) * kV + v] = w;
+        x0 = std::min(x0, w.x); x1 = std::max(x1, w.x);
+        y0 = std::min(y0, w.y); y1 = std::max(y1, w.y);
+      }
+      box_[4 * k] = x0; box_[4 * k + 1] = x1; box_[4 * k + 2] = y0; box_[4 * k + 3] = y1;
+    }
+  }
+
+  void computeBondForces() {
+    const int bonds = static_cast<int>(model_.bond_rest.size());
+    int newly_broken = 0;
+#pragma omp parallel for num_threads(threads_) schedule(static) reduction(+ : newly_broken)
+    for (int b = 0; b < bonds; ++b) {
+      if (bond_broken_[b]) continue;
+      const int i = model_.bond_i[b], j = model_.bond_j[b];
+      bond_force_[b] = rmibBondForce(model_.bond_rest[b], body(i), motion_[i].yaw, body(j), motion_[j].yaw,
+                                     model_.constants.bond);
+      if (bond_force_[b].breaks) {
+        bond_broken_[b] = 1;  // for good; its force of this step still acts
+        ++newly_broken;
+      }
+    }
+    if (newly_broken > 0) {
+      broken_count_ += newly_broken;
+      rebuild_requested_ = true;  // the pair now needs a DEM contact
+    }
+  }
+
+  void computeContactForces() {
+    const int pairs = static_cast<int>(contact_i_.size());
+    int touching = 0;
+#pragma omp parallel for num_threads(threads_) schedule(static) reduction(+ : touching)
+    for (int p = 0; p < pairs; ++p) {
+      const int i = contact_i_[p], j = contact_j_[p];
+      PairForce& f = contact_force_[p];
+      const double* bi = &box_[4 * i];
+      const double* bj = &box_[4 * j];
+      if (bi[1] <= bj[0] || bj[1] <= bi[0] || bi[3] <= bj[2] || bj[3] <= bi[2]) {
+        f.touching = false;
+        continue;
+      }
+      const PolygonOverlap overlap = intersectConvexPolygons(
+          &world_[static_cast<size_t>(i) * kV], model_.vertex_count[i], &world_[static_cast<size_t>(j) * kV],
+          model_.vertex_count[j]);
+      f = demContactForce(overlap, body(i), body(j), model_.constants.contact);
+      touching += f.touching ? 1 : 0;
+    }
+    last_contacts_ = touching;
+  }
+
+  /// Forces of the rigid planes on cell k; the structure's share is kept per panel.
+  void addPlaneForces(int k, double pusher_velocity, double& fx, double& fy, double& fz, double& tz) {
+    const ModelConstants& c = model_.constants;
+    const CellMotion& m = motion_[k];
+    const Vec2* poly = &world_[static_cast<size_t>(k) * kV];
+    const int n = model_.vertex_count[k];
+    const double h = c.contact.thickness;
+    const double z_low = m.z - 0.5 * h, z_high = m.z + 0.5 * h;
+    const double* box = &box_[4 * k];
+    const Vec2 centre = {m.x, m.y}, velocity = {m.vx, m.vy};
+    auto apply = [&](const SlabPenetration& pen, const RigidPlane& plane, const PlaneContactConstants& law,
+                     double plane_vx) {
+      const PlaneContactForce f = planeContactForce(pen, plane, law, centre, velocity, m.vz, m.wz, model_.mass[k],
+                                                    model_.area[k], plane_vx);
+      fx += f.fx; fy += f.fy; fz += f.fz;
+      tz += cross(f.point - centre, Vec2{f.fx, f.fy});
+      return f;
+    };
+
+    // Pusher: solid x < pusher_x, outward normal +x.
+    pusher_fx_[k] = 0.0;
+    if (box[0] < pusher_x_) {
+      const RigidPlane plate = {1.0, 0.0, 0.0, pusher_x_};
+      pusher_fx_[k] = apply(slabPenetration(poly, n, z_low, z_high, plate), plate, c.pusher, pusher_velocity).fx;
+    }
+    // Basin walls (or the structure's side panels): solid |y| > half width.
+    if (c.walls_enabled && box[1] > c.wall_x_start) {
+      if (box[3] > c.wall_half_width) {
+        const RigidPlane wall = {0.0, -1.0, 0.0, -c.wall_half_width};
+        apply(slabPenetration(poly, n, z_low, z_high, wall), wall, c.wall, 0.0);
+      }
+      if (box[2] < -c.wall_half_width) {
+        const RigidPlane wall = {0.0, 1.0, 0.0, -c.wall_half_width};
+        apply(slabPenetration(poly, n, z_low, z_high, wall), wall, c.wall, 0.0);
+      }
+    }
+    // False bottom: solid z < bottom_z for x >= bottom_x_start.
+    if (c.bottom_enabled && z_low < c.bottom_z && box[1] > c.bottom_x_start) {
+      Vec2 part[kV + 1];
+      const int count = clipPolygonByHalfPlane(poly, n, -1.0, 0.0, -c.bottom_x_start, part);
+      const RigidPlane floor = {0.0, 0.0, 1.0, c.bottom_z};
+      apply(slabPenetration(part, count, z_low, z_high, floor), floor, c.bottom, 0.0);
+    }
+    // Structure face, panel by panel: the face spans z up to its top and y over the panels.
+    StructureContact& s = structure_[k];
+    s.panel_count = 0;
+    const RigidPlane& face = c.structure_face;
+    // The slab reaches the solid when the least value of m . p over it is below the offset
+    // (m_x < 0, m_z > 0: the rightmost x and the lowest z give the least value).
+    const double lowest = face.mx * box[1] + face.mz * z_low;
+    if (lowest < face.offset && z_low < c.structure_top_z) {
+      const double y_end = c.structure_y_min + c.panels * c.panel_width;
+      const int first = std::max(0, static_cast<int>(std::floor((box[2] - c.structure_y_min) / c.panel_width)));
+      const int last = std::min(c.panels - 1, static_cast<int>(std::floor((box[3] - c.structure_y_min) / c.panel_width)));
+      if (box[3] > c.structure_y_min && box[2] < y_end && first <= last) {
+        s.first_panel = first;
+        for (int p = first; p <= last && s.panel_count < kMaxPanelsPerCell; ++p) {
+          const double y0 = c.structure_y_min + p * c.panel_width, y1 = y0 + c.panel_width;
+          Vec2 strip_a[kV + 1], strip[kV + 2];
+          const int na = clipPolygonByHalfPlane(poly, n, 0.0, -1.0, -y0, strip_a);
+          const int nb = na >= 3 ? clipPolygonByHalfPlane(strip_a, na, 0.0, 1.0, y1, strip) : 0;
+          const SlabPenetration pen = slabPenetration(strip, nb, z_low, std::min(z_high, c.structure_top_z), face);
+          const PlaneContactForce f = apply(pen, face, c.structure, 0.0);
+          const int slot = s.panel_count++;
+          s.fx[slot] = -f.fx; s.fy[slot] = -f.fy; s.fz[slot] = -f.fz;
+        }
+      }
+    }
+  }
+
+  void stepOnce(double pusher_velocity, LoadSample& sum) {
+    const ModelConstants& c = model_.constants;
+    const int n = model_.cell_count;
+    const double dt = c.time_step;
+    updateWorldPolygons();
+    computeBondForces();
+    computeContactForces();
+    bool blown = false;
+#pragma omp parallel for num_threads(threads_) schedule(static) reduction(|| : blown)
+    for (int k = 0; k < n; ++k) {
+      const CellMotion& m = motion_[k];
+      const Vec2 centre = {m.x, m.y};
+      double fx = 0.0, fy = 0.0, fz = 0.0, tz = 0.0;
+      for (int e = bond_incidence_.offsets[k]; e < bond_incidence_.offsets[k + 1]; ++e) {
+        const int b = bond_incidence_.entries[e] >> 1;
+        if (bond_broken_[b] && !bond_force_[b].breaks) continue;
+        const BondForce& f = bond_force_[b];
+        const double sign = (bond_incidence_.entries[e] & 1) ? 1.0 : -1.0;
+        const Vec2 force = sign * f.force_on_j;
+        fx += force.x; fy += force.y; fz += sign * f.fz_on_j;
+        tz += cross((bond_incidence_.entries[e] & 1) ? f.arm_j : f.arm_i, force);
+      }
+      for (int e = contact_incidence_.offsets[k]; e < contact_incidence_.offsets[k + 1]; ++e) {
+        const PairForce& f = contact_force_[contact_incidence_.entries[e] >> 1];
+        if (!f.touching) continue;
+        const double sign = (contact_incidence_.entries[e] & 1) ? 1.0 : -1.0;
+        const Vec2 force = sign * f.force_on_j;
+        fx += force.x; fy += force.y; fz += sign * f.fz_on_j;
+        tz += cross(f.point - centre, force);
+      }
+      const WaterForce w = waterForce(c.water, model_.mass[k], model_.area[k],
+                                      model_.inertia[k] / (model_.mass[k] / model_.area[k]), m.z,
+                                      {m.vx, m.vy}, m.vz, m.wz);
+      fx += w.horizontal.x; fy += w.horizontal.y; fz += w.vertical; tz += w.torque;
+      addPlaneForces(k, pusher_velocity, fx, fy, fz, tz);
+      integrateSymplecticEuler(motion_[k], fx, fy, fz, tz, 1.0 / model_.mass[k], 1.0 / model_.inertia[k], dt);
+      const CellMotion& after = motion_[k];
+      const double speed2 = after.vx * after.vx + after.vy * after.vy + after.vz * after.vz;
+      blown = blown || !std::isfinite(after.x + after.y + after.z + after.yaw) || !(speed2 < kRunawaySpeed * kRunawaySpeed);
+    }
+    // Broken bonds whose last force has now acted stop here.
+    for (size_t b = 0; b < bond_force_.size(); ++b) {
+      if (bond_broken_[b]) bond_force_[b].breaks = false;
+    }
+    // Loads, summed in cell order (deterministic).
+    for (int k = 0; k < n; ++k) {
+      sum.pusher_force += pusher_fx_[k];
+      const StructureContact& s = structure_[k];
+      for (int slot = 0; slot < s.panel_count; ++slot) {
+        const int p = s.first_panel + slot;
+        sum.panel_horizontal[p] += s.fx[slot];
+        sum.panel_lateral[p] += s.fy[slot];
+        sum.panel_vertical[p] += s.fz[slot];
+        sum.horizontal_raw += s.fx[slot];
+        sum.lateral_raw += s.fy[slot];
+        sum.vertical_raw += s.fz[slot];
+      }
+    }
+    pusher_x_ += pusher_velocity * dt;
+    time_ += dt;
+    ++steps_;
+    ++steps_since_rebuild_;
+    if (blown) {
+      std::ostringstream msg;
+      msg << "numerical blow-up at t = " << time_ << " s: a cell state became non-finite or faster than "
+          << kRunawaySpeed << " m/s (time step " << dt << " s)";
+      health_error_ = msg.str();
+    }
+  }
+
+  const Model& model_;
+  const int threads_;
+  std::vector<CellMotion> motion_, reference_;
+  std::vector<Vec2> world_;               ///< (cells x kV) world vertices [m]
+  std::vector<double> box_;               ///< (cells x 4) x0 x1 y0 y1 [m]
+  std::vector<StructureContact> structure_;
+  std::vector<double> pusher_fx_;         ///< (cells) [N]
+  std::vector<unsigned char> bond_broken_;
+  std::vector<BondForce> bond_force_;
+  Incidence bond_incidence_, contact_incidence_;
+  FixedRadiusNeighbourSearch search_;
+  std::vector<int> contact_i_, contact_j_;
+  std::vector<PairForce> contact_force_;
+  int broken_count_ = 0;
+  int last_contacts_ = 0;
+  long steps_since_rebuild_ = 0;
+  bool rebuild_requested_ = true;
+  double time_ = 0.0;
+  long steps_ = 0;
+  double pusher_x_ = 0.0;
+  LoadSample loads_;
+  std::string health_error_;
+};
+
+}  // namespace
+
+std::unique_ptr<Backend> makeCpuBackend(const Model& model, int threads) {
+  return std::make_unique<CpuBackend>(model, threads);
+}
+
+}  // namespace thin_ice

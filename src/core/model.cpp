@@ -1,0 +1,191 @@
+#include "thin_ice_sim/model.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "thin_ice_sim/scenario.hpp"
+
+namespace thin_ice {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
+  const IceParams& ice = p.ice;
+  const double h = ice.thickness;
+  const double regularisation = p.numerics.friction_regularisation;
+  ModelConstants c{};
+  c.contact = {h,
+               3.0 * ice.youngs_modulus / (1.0 - ice.poisson_ratio),
+               3.0 * ice.vertical_modulus / (1.0 - ice.poisson_ratio),
+               ice.smoothing_exponent_h,
+               ice.smoothing_exponent_v,
+               ice.friction_ice_ice,
+               ice.contact_damping_ratio,
+               regularisation};
+  c.bond = {h,
+            ice.smoothing_exponent_h,
+            ice.smoothing_exponent_v,
+            ice.flexural_strength,
+            ice.compressive_strength,
+            ice.compression_coupling,
+            ice.vertical_stress == VerticalStressModel::kBending,
+            ice.bond_damping_ratio};
+  c.water = {p.water.density,       p.water.gravity,        h, p.water.linear_drag,
+             p.water.quadratic_drag, p.water.vertical_linear_drag, p.water.vertical_quadratic_drag};
+  c.structure = {p.structure.stiffness, h, p.structure.friction, ice.contact_damping_ratio, regularisation};
+  c.pusher = {p.pusher.stiffness, h, 0.0, ice.contact_damping_ratio, regularisation};
+  c.bottom = {p.bottom.stiffness, h, p.bottom.friction, ice.contact_damping_ratio, regularisation};
+  c.wall = {p.channel.stiffness, h, p.channel.friction, ice.contact_damping_ratio, regularisation};
+
+  // Face through (toe_x, 0, 0) rising towards +x at the given angle; outward normal towards the
+  // ice: m = (-sin a, 0, cos a).
+  const double angle = p.structure.angle_deg * kPi / 180.0;
+  c.structure_face = {-std::sin(angle), 0.0, std::cos(angle), -std::sin(angle) * p.structure.toe_x};
+  c.structure_top_z = p.structure.height;
+  c.structure_y_min = -0.5 * p.structure.width;
+  c.panels = p.structure.panels;
+  c.panel_width = p.structure.width / p.structure.panels;
+  c.calibration_factor = p.structure.calibration_factor;
+  c.bottom_enabled = p.bottom.enabled;
+  c.bottom_x_start = p.structure.toe_x - p.bottom.distance_from_structure;
+  c.bottom_z = -p.bottom.depth;
+  // Basin walls along the whole lane, or (without them) the side panels of the structure only.
+  c.walls_enabled = true;
+  if (p.channel.enabled) {
+    c.wall_half_width = 0.5 * p.channel.width;
+    c.wall_x_start = -1e30;
+  } else {
+    c.wall_half_width = 0.5 * p.structure.width;
+    c.wall_x_start = p.structure.toe_x - p.structure.side_panel_length;
+  }
+  c.time_step = p.numerics.time_step;
+  c.mean_edge_length = computeStats(sheet).mean_edge_length;
+  if (!(c.mean_edge_length > 0.0)) c.mean_edge_length = p.sheet.cell_size;
+  c.rebuild_displacement = p.numerics.rebuild_displacement * c.mean_edge_length;
+  c.rebuild_rotation = p.numerics.rebuild_rotation_deg * kPi / 180.0;
+  c.max_steps_between_rebuilds = p.numerics.max_steps_between_rebuilds;
+  return c;
+}
+
+}  // namespace
+
+Model buildModel(const Params& params, const IceSheet& sheet, const std::string& source) {
+  Model m;
+  const int n = static_cast<int>(sheet.cells.size());
+  m.cell_count = n;
+  m.vertex_x.assign(static_cast<size_t>(n) * kMaxPolygonVertices, 0.0);
+  m.vertex_y.assign(static_cast<size_t>(n) * kMaxPolygonVertices, 0.0);
+  m.vertex_count.resize(n);
+  m.area.resize(n);
+  m.mass.resize(n);
+  m.inertia.resize(n);
+  m.radius.resize(n);
+  m.initial.resize(n);
+  const IceParams& ice = params.ice;
+  const double h = ice.thickness;
+  // Floating equilibrium: draft rho_i / rho_w h, so the centroid sits at h/2 - draft.
+  const double z_float = 0.5 * h - ice.density / params.water.density * h;
+  double largest_radius = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const CellGeometry& c = sheet.cells[k];
+    m.vertex_count[k] = static_cast<int>(c.vertices.size());
+    double r = 0.0;
+    for (size_t v = 0; v < c.vertices.size(); ++v) {
+      m.vertex_x[k * kMaxPolygonVertices + v] = c.vertices[v].x;
+      m.vertex_y[k * kMaxPolygonVertices + v] = c.vertices[v].y;
+      r = std::max(r, norm(c.vertices[v]));
+    }
+    m.area[k] = c.area;
+    m.mass[k] = ice.density * c.area * h;
+    m.inertia[k] = ice.density * h * c.polar_moment;
+    m.radius[k] = r;
+    largest_radius = std::max(largest_radius, r);
+    m.initial[k] = {c.centroid.x, c.centroid.y, z_float, 0.0, 0.0, 0.0, 0.0, 0.0};
+  }
+
+  const double shear_modulus = ice.youngs_modulus / (2.0 * (1.0 + ice.poisson_ratio));
+  const double vertical_shear_modulus = ice.vertical_modulus / (2.0 * (1.0 + ice.poisson_ratio));
+  for (const SharedEdge& e : sheet.edges) {
+    const CellGeometry& ci = sheet.cells[e.i];
+    const CellGeometry& cj = sheet.cells[e.j];
+    BondRest b;
+    const Vec2 mid = e.midpoint();
+    b.anchor_i = mid - ci.centroid;
+    b.anchor_j = mid - cj.centroid;
+    b.edge_length = e.length;
+    b.distance = norm(cj.centroid - ci.centroid);
+    // Edge normal, turned to point from i to j.
+    Vec2 normal = perpendicular((1.0 / e.length) * (e.end - e.start));
+    if (dot(normal, cj.centroid - ci.centroid) < 0.0) normal = -normal;
+    b.normal = normal;
+    const double bar = h * e.length / b.distance;  // section over length [m]
+    b.k_normal = ice.youngs_modulus * bar;
+    b.k_shear = shear_modulus * bar;
+    b.k_vertical = vertical_shear_modulus * bar;
+    m.bond_i.push_back(e.i);
+    m.bond_j.push_back(e.j);
+    m.bond_rest.push_back(b);
+  }
+
+  m.constants = makeConstants(params, sheet);
+  // Candidates: bounding circles closer than a margin that covers the motion allowed between
+  // rebuilds (two cells each moving rebuild_displacement and turning rebuild_rotation).
+  const ModelConstants& c = m.constants;
+  const double margin = 2.0 * (c.rebuild_displacement + largest_radius * c.rebuild_rotation);
+  m.constants.search_radius = 2.0 * largest_radius + margin;
+
+  if (2.0 * largest_radius >= (kMaxPanelsPerCell - 1) * c.panel_width) {
+    std::ostringstream msg;
+    msg << source << ": structure.panels = " << params.structure.panels << " makes panels "
+        << c.panel_width << " m wide; allowed: panels at least "
+        << 2.0 * largest_radius / (kMaxPanelsPerCell - 1) << " m wide (a cell may touch at most "
+        << kMaxPanelsPerCell << " panels)";
+    throw ScenarioError(msg.str());
+  }
+  m.initial_pusher_x = params.sheet.x_min;
+  m.initial_pusher_velocity = params.pusher.velocity;
+  m.critical_time_step = criticalTimeStep(m, params);
+  const double allowed = params.numerics.critical_step_safety * m.critical_time_step;
+  if (!(params.numerics.time_step <= allowed)) {
+    std::ostringstream msg;
+    msg << source << ": numerics.time_step = " << params.numerics.time_step
+        << " s is unstable; allowed: <= " << allowed << " s (critical_step_safety "
+        << params.numerics.critical_step_safety << " x the critical step " << m.critical_time_step
+        << " s of the stiffest spring)";
+    throw ScenarioError(msg.str());
+  }
+  return m;
+}
+
+double criticalTimeStep(const Model& m, const Params& p) {
+  // Per cell: the sum of the stiffnesses that can act on it at once, against its mass and (through
+  // the moment arm of its radius) its yaw inertia.
+  std::vector<double> bond_stiffness(m.cell_count, 0.0);
+  for (size_t b = 0; b < m.bond_rest.size(); ++b) {
+    const BondRest& r = m.bond_rest[b];
+    const double k = std::max({r.k_normal, r.k_shear, r.k_vertical});
+    bond_stiffness[m.bond_i[b]] += k;
+    bond_stiffness[m.bond_j[b]] += k;
+  }
+  const ModelConstants& c = m.constants;
+  const double contact_stiffness = c.contact.plane_modulus * p.ice.thickness;
+  double omega_max = 0.0;
+  for (int k = 0; k < m.cell_count; ++k) {
+    // Plane laws: an edge about one cell wide flush with the plane, S_pen = width x depth.
+    const double width = std::sqrt(m.area[k]);
+    const double plane = std::max({p.structure.stiffness, p.pusher.stiffness, p.channel.stiffness,
+                                   p.bottom.stiffness}) * width;
+    // Cell-cell springs (a broken cell touches about six neighbours in place of its bonds) count
+    // twice, since the neighbour may move the other way; a rigid plane does not move.
+    const double k_sum = 2.0 * std::max(bond_stiffness[k], 6.0 * contact_stiffness) + plane;
+    const double translation = k_sum / m.mass[k];
+    const double rotation = k_sum * m.radius[k] * m.radius[k] / m.inertia[k];
+    omega_max = std::max(omega_max, std::sqrt(std::max(translation, rotation)));
+  }
+  const double zeta = std::max(p.ice.contact_damping_ratio, p.ice.bond_damping_ratio);
+  return omega_max > 0.0 ? 2.0 / omega_max * (std::sqrt(1.0 + zeta * zeta) - zeta) : 0.0;
+}
+
+}  // namespace thin_ice

@@ -1,0 +1,82 @@
+#include "thin_ice_sim/simulation.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "cpu_backend.hpp"
+#include "thin_ice_sim/backend.hpp"
+#include "thin_ice_sim/model.hpp"
+
+namespace thin_ice {
+
+BackendKind parseBackendKind(const std::string& text, const std::string& key) {
+  if (text == "cpu") return BackendKind::kCpu;
+  if (text == "cuda") return BackendKind::kCuda;
+  if (text == "auto") return BackendKind::kAuto;
+  throw std::invalid_argument(key + " = '" + text + "': allowed values are 'cpu', 'cuda' and 'auto'");
+}
+
+Simulation::Simulation(const Scenario& scenario, BackendKind backend) : scenario_(scenario) {
+  const Params& p = scenario_.params;
+  validateParams(p, scenario_.source.empty() ? scenario_.name : scenario_.source);
+  if (backend == BackendKind::kCuda) {
+    throw std::runtime_error(
+        "backend 'cuda' is not available: this build has no CUDA simulation backend yet; use 'cpu' or 'auto'");
+  }
+  sheet_ = generateIceSheet(p.sheet);
+  model_ = std::make_unique<Model>(buildModel(p, sheet_, scenario_.source.empty() ? scenario_.name : scenario_.source));
+  backend_ = makeCpuBackend(*model_, p.numerics.threads);
+  backend_note_ = backend == BackendKind::kAuto ? "backend auto: no CUDA simulation backend in this build, using the CPU"
+                                                : "backend cpu";
+  pusher_velocity_ = p.pusher.velocity;
+}
+
+Simulation::~Simulation() = default;
+
+void Simulation::step(long steps) {
+  if (!healthy() || steps <= 0) return;
+  backend_->step(steps, pusher_velocity_);
+  last_error_ = backend_->healthError();
+}
+
+void Simulation::advance(double span) {
+  if (paused_ || !(span > 0.0)) return;
+  step(static_cast<long>(std::ceil(span / timeStep() - 1e-9)));
+}
+
+void Simulation::setPusherVelocity(double velocity) {
+  if (std::isfinite(velocity)) pusher_velocity_ = velocity;
+}
+
+double Simulation::pusherVelocity() const { return pusher_velocity_; }
+
+void Simulation::reset() {
+  backend_->reset();
+  pusher_velocity_ = scenario_.params.pusher.velocity;
+  last_error_.clear();
+}
+
+double Simulation::time() const { return backend_->time(); }
+double Simulation::timeStep() const { return model_->constants.time_step; }
+double Simulation::criticalTimeStep() const { return model_->critical_time_step; }
+double Simulation::pushedLength() const { return backend_->pusherPosition() - model_->initial_pusher_x; }
+double Simulation::pusherPosition() const { return backend_->pusherPosition(); }
+long Simulation::stepCount() const { return backend_->stepCount(); }
+LoadSample Simulation::loads() const { return backend_->loads(); }
+std::vector<CellSnapshot> Simulation::cells() const { return backend_->cells(); }
+int Simulation::cellCount() const { return model_->cell_count; }
+std::string Simulation::backendName() const { return backend_->name(); }
+
+std::vector<Vec2> Simulation::cellPolygon(int k) const {
+  std::vector<Vec2> polygon;
+  if (k < 0 || k >= model_->cell_count) return polygon;
+  const CellSnapshot c = backend_->cells()[k];
+  const double cs = std::cos(c.yaw), sn = std::sin(c.yaw);
+  for (int v = 0; v < model_->vertex_count[k]; ++v) {
+    const Vec2 offset = {model_->vertex_x[k * kMaxPolygonVertices + v], model_->vertex_y[k * kMaxPolygonVertices + v]};
+    polygon.push_back(Vec2{c.x, c.y} + rotate(offset, cs, sn));
+  }
+  return polygon;
+}
+
+}  // namespace thin_ice

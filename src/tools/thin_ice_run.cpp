@@ -1,0 +1,419 @@
+// thin_ice_run: runs one scenario offline and writes its load history, the paper's load
+// statistics (Section 5.1, Table 6) and optional cell snapshots.
+//   thin_ice_run --scenario FILE [--set section.key=value]... (--until-length L | --until-time T)
+//                [--backend cpu|cuda|auto] [--output-interval S] [--snapshots N] --out DIR
+// Writes DIR/loads.csv (one row per output interval, through loads.csv.partial), DIR/summary.json
+// and with --snapshots DIR/snapshots/cells_RRRRRR.csv (RRRRRR: loads.csv data row, 1-based; 000000:
+// the sheet at rest) listed in snapshots/index.csv.
+// Exit status: 0 done; 1 I/O or backend failure; 2 bad arguments or scenario (nothing written);
+// 3 the simulation became unhealthy (rows up to then and the summary are kept).
+#include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "thin_ice_sim/load_statistics.hpp"
+#include "thin_ice_sim/scenario.hpp"
+#include "thin_ice_sim/sheet_io.hpp"
+#include "thin_ice_sim/simulation.hpp"
+
+namespace {
+
+using thin_ice::LoadSample;
+using thin_ice::Simulation;
+using Clock = std::chrono::steady_clock;
+
+const char* kUsage =
+    "usage: thin_ice_run --scenario FILE [--set section.key=value]... "
+    "(--until-length L | --until-time T)\n"
+    "                    [--backend cpu|cuda|auto] [--output-interval S] [--snapshots N] --out DIR\n";
+
+struct UsageError : std::runtime_error {  // bad command line: exit status 2 with the usage
+  using std::runtime_error::runtime_error;
+};
+
+struct Options {
+  std::string scenario, out;
+  std::vector<std::string> overrides;  // "section.key=value", applied in order
+  double until_length = 0.0;           // [m] pushed length to reach (0: not given)
+  double until_time = 0.0;             // [s] simulated time to reach (0: not given)
+  thin_ice::BackendKind backend = thin_ice::BackendKind::kAuto;
+  double output_interval = 0.01;       // [s] simulated time between rows of loads.csv
+  int snapshots = 0;                   // cell snapshots, evenly spaced in progress
+  bool help = false;
+};
+
+double parseNumber(const std::string& flag, const std::string& text, const char* allowed) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || *end != '\0' || !std::isfinite(value) || !(value > 0.0)) {
+    throw UsageError(flag + " '" + text + "' is invalid; allowed: " + allowed);
+  }
+  return value;
+}
+
+thin_ice::BackendKind parseBackend(const std::string& text) {
+  try {
+    return thin_ice::parseBackendKind(text, "--backend");
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(e.what());
+  }
+}
+
+Options parseOptions(int argc, char** argv) {
+  Options o;
+  for (int k = 1; k < argc; ++k) {
+    const std::string flag = argv[k];
+    if (flag == "--help" || flag == "-h") {
+      o.help = true;
+      return o;
+    }
+    static const std::set<std::string> kFlags = {"--scenario", "--set", "--until-length",
+        "--until-time", "--backend", "--out", "--output-interval", "--snapshots"};
+    if (!kFlags.count(flag)) {
+      throw UsageError("unknown argument '" + flag + "'; allowed: --scenario --set --until-length "
+                       "--until-time --backend --output-interval --snapshots --out");
+    }
+    if (k + 1 >= argc) throw UsageError(flag + " needs a value");
+    const std::string value = argv[++k];
+    if (flag == "--scenario") o.scenario = value;
+    if (flag == "--out") o.out = value;
+    if (flag == "--until-length") o.until_length = parseNumber(flag, value, "a length > 0 [m]");
+    if (flag == "--until-time") o.until_time = parseNumber(flag, value, "a time > 0 [s]");
+    if (flag == "--backend") o.backend = parseBackend(value);
+    if (flag == "--output-interval") o.output_interval = parseNumber(flag, value, "a time > 0 [s]");
+    if (flag == "--set" && value.find('=') == std::string::npos) {
+      throw UsageError("--set '" + value + "' is invalid; allowed: section.key=value");
+    }
+    if (flag == "--set") o.overrides.push_back(value);
+    if (flag == "--snapshots") {
+      char* end = nullptr;
+      const long count = std::strtol(value.c_str(), &end, 10);
+      if (value.empty() || *end != '\0' || count < 0 || count > 100000) {
+        throw UsageError("--snapshots '" + value + "' is invalid; allowed: an integer 0..100000");
+      }
+      o.snapshots = static_cast<int>(count);
+    }
+  }
+  if (o.scenario.empty()) throw UsageError("--scenario FILE is required");
+  if (o.out.empty()) throw UsageError("--out DIR is required");
+  if ((o.until_length > 0.0) == (o.until_time > 0.0)) {
+    throw UsageError("give exactly one of --until-length L [m] or --until-time T [s]");
+  }
+  return o;
+}
+
+/// Table 6 experimental targets (Lemstrom et al.; alpha = 0.63 applies to the model only):
+/// series letter, steady-state mean F_avg [N], peak F_p [N], where the numbers come from.
+struct Experiment {
+  const char* series;
+  double mean, peak;
+  const char* source;
+};
+
+const Experiment* experimentFor(const std::string& scenario_name) {
+  static const Experiment kTable6[] = {
+      {"W", 8600.0, 15790.0, "Table 6 / Fig. 10: W-3 steady state and peak"},
+      {"M", 7820.0, 12700.0, "Table 6 / Fig. 11: M-2 steady state and peak"},
+      {"S", 13750.0, 20560.0, "Table 6 / Fig. 12: S-2 steady state, S-1 peak"}};
+  if (scenario_name.size() < 2 || scenario_name[1] != '-') return nullptr;
+  for (const Experiment& e : kTable6) {
+    if (std::toupper(static_cast<unsigned char>(scenario_name[0])) == e.series[0]) return &e;
+  }
+  return nullptr;
+}
+
+std::string jsonString(const std::string& text) {
+  std::string out = "\"";
+  for (const char c : text) {
+    if (c == '"' || c == '\\') {
+      out += std::string("\\") + c;
+    } else if (static_cast<unsigned char>(c) < 0x20) {  // control characters: \u00XX
+      char code[8];
+      std::snprintf(code, sizeof(code), "\\u%04x", static_cast<unsigned>(c));
+      out += code;
+    } else {
+      out += c;  // UTF-8 bytes pass through
+    }
+  }
+  return out + "\"";
+}
+
+/// JSON has no NaN or infinity: those become null.
+std::string jsonNumber(double value) {
+  if (!std::isfinite(value)) return "null";
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.10g", value);
+  return text;
+}
+
+std::string loadsHeader(std::size_t panels) {
+  std::string header =
+      "time_s,pushed_length_m,horizontal_raw_N,horizontal_calibrated_N,vertical_raw_N,"
+      "pusher_force_N,intact_bonds,broken_bonds,contacts";
+  for (std::size_t p = 1; p <= panels; ++p) header += ",panel_" + std::to_string(p) + "_N";
+  return header + "\n";
+}
+
+std::string loadsRow(const LoadSample& s, std::size_t panels) {
+  char text[256];
+  std::snprintf(text, sizeof(text), "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%d,%d", s.time,
+                s.pushed_length, s.horizontal_raw, s.horizontal_calibrated, s.vertical_raw,
+                s.pusher_force, s.intact_bonds, s.broken_bonds, s.contacts);
+  std::string row = text;
+  for (std::size_t p = 0; p < panels; ++p) {  // the header's count, whatever the sample holds
+    std::snprintf(text, sizeof(text), ",%.9g", p < s.panel_horizontal.size() ? s.panel_horizontal[p] : 0.0);
+    row += text;
+  }
+  return row + "\n";
+}
+
+/// One CSV per snapshot: cell pose and its world polygon as "x0 y0 x1 y1 ..." [m] in one field.
+void writeSnapshot(const Simulation& sim, const std::string& dir, long row) {
+  const std::vector<thin_ice::CellSnapshot> cells = sim.cells();
+  std::ostringstream text;
+  text.precision(9);
+  text << "cell,x_m,y_m,z_m,yaw_rad,in_intact_sheet,polygon_xy_m\n";
+  for (std::size_t k = 0; k < cells.size(); ++k) {
+    const thin_ice::CellSnapshot& c = cells[k];
+    text << k << ',' << c.x << ',' << c.y << ',' << c.z << ',' << c.yaw << ','
+         << (c.in_intact_sheet ? 1 : 0) << ',';
+    const std::vector<thin_ice::Vec2> polygon = sim.cellPolygon(static_cast<int>(k));
+    for (std::size_t v = 0; v < polygon.size(); ++v) text << (v ? " " : "") << polygon[v].x << ' ' << polygon[v].y;
+    text << '\n';
+  }
+  char name[32];
+  std::snprintf(name, sizeof(name), "cells_%06ld.csv", row);
+  thin_ice::writeFileAtomically(dir + "/" + name, text.str());
+  std::ofstream index(dir + "/index.csv", std::ios::app);  // file, time, pushed length
+  index << name << ',' << sim.time() << ',' << sim.pushedLength() << '\n';
+}
+
+std::string formatDuration(double seconds) {
+  if (!std::isfinite(seconds) || seconds < 0.0) return "?";
+  const long s = std::lround(seconds);
+  char text[32];
+  if (s >= 3600) std::snprintf(text, sizeof(text), "%ldh%02ldm", s / 3600, (s / 60) % 60);
+  if (s >= 60 && s < 3600) std::snprintf(text, sizeof(text), "%ldm%02lds", s / 60, s % 60);
+  if (s < 60) std::snprintf(text, sizeof(text), "%lds", s);
+  return text;
+}
+
+/// A single updating line on a terminal (every 0.5 s wall); one plain line per 10 % otherwise.
+class Progress {
+ public:
+  Progress() : tty_(::isatty(STDERR_FILENO) != 0) {}
+  void report(double fraction, const LoadSample& s, double wall, bool last) {
+    // 1e-3: rows whose time falls a rounding short of a tenth still print it
+    const bool due = last || (tty_ ? wall - last_print_ >= 0.5 : fraction >= next_tenth_ - 1e-3);
+    if (!due) return;
+    const double rtf = wall > 0.0 ? s.time / wall : 0.0;
+    const double eta = fraction > 0.0 ? wall * (1.0 - fraction) / fraction : NAN;
+    std::fprintf(stderr, "%s%3.0f%%  t %.2f s  L %.3f m  F_cal %.0f N  %.3gx real time  ETA %s%s",
+                 tty_ ? "\r" : "", 100.0 * fraction, s.time, s.pushed_length,
+                 s.horizontal_calibrated, rtf, formatDuration(eta).c_str(),
+                 tty_ ? (last ? "   \n" : "   ") : "\n");
+    last_print_ = wall;
+    while (next_tenth_ - 1e-3 <= fraction) next_tenth_ += 0.1;
+  }
+
+ private:
+  bool tty_;
+  double last_print_ = -1.0;   // [s] wall
+  double next_tenth_ = 0.1;    // fraction at which the next plain line is due
+};
+
+struct RunResult {
+  std::vector<double> length, load;  // [m], [N] calibrated: the history analysed
+  double wall = 0.0;                 // [s] of stepping and output
+  LoadSample last;                   // the last row written (zero loads before the first)
+  std::string error;                 // empty when the run reached its target
+};
+
+RunResult runSimulation(Simulation& sim, const Options& o) {
+  RunResult r;
+  const double dt = sim.timeStep(), velocity = sim.pusherVelocity();
+  const long steps_per_row = std::max(1L, std::lround(o.output_interval / dt));
+  const bool by_length = o.until_length > 0.0;
+  auto stepsLeft = [&]() -> long {  // whole steps until the target, rounded up
+    const double left = by_length ? (o.until_length - sim.pushedLength()) / (velocity * dt)
+                                  : (o.until_time - sim.time()) / dt;
+    return static_cast<long>(std::ceil(left - 1e-6));  // 1e-6 step: rounding in t or L
+  };
+  auto fraction = [&]() {
+    const double f = by_length ? sim.pushedLength() / o.until_length : sim.time() / o.until_time;
+    return std::clamp(f, 0.0, 1.0);
+  };
+  const std::string csv_path = o.out + "/loads.csv";
+  std::ofstream csv(csv_path + ".partial", std::ios::trunc);
+  if (!csv) throw std::runtime_error("cannot write '" + csv_path + ".partial'");
+  const std::string snapshot_dir = o.out + "/snapshots";
+  if (o.snapshots > 0) std::ofstream(snapshot_dir + "/index.csv") << "file,time_s,pushed_length_m\n";
+  // Snapshot k (0-based) is due at progress k / (N - 1): the first shows the sheet at rest, the
+  // last the end (N = 1: the end only). Several due in one row give one file.
+  int snapshots_taken = 0;
+  auto snapshotDue = [&](double f, bool last) {
+    const int due = last ? o.snapshots
+                         : o.snapshots == 1 ? 0 : int(std::floor(f * (o.snapshots - 1) + 1e-9)) + 1;
+    if (std::min(due, o.snapshots) <= snapshots_taken) return false;
+    snapshots_taken = std::min(due, o.snapshots);
+    return true;
+  };
+
+  // Row r (1-based) holds the loads averaged over output interval r (Simulation::loads()),
+  // stamped with the time at its end; there is no row at t = 0 (nothing averaged yet).
+  const std::size_t panels = static_cast<std::size_t>(std::max(0, sim.params().structure.panels));
+  csv << loadsHeader(panels);
+  if (snapshotDue(0.0, false)) writeSnapshot(sim, snapshot_dir, 0);  // the sheet at rest
+  Progress progress;
+  const Clock::time_point start = Clock::now();
+  for (long row = 1, left = stepsLeft(); left > 0; ++row) {
+    const double pushed_before = sim.pushedLength();
+    try {
+      sim.step(std::min(steps_per_row, left));
+    } catch (const std::exception& e) {
+      r.error = std::string("step failed: ") + e.what();
+    }
+    if (r.error.empty() && !sim.healthy()) r.error = sim.lastError();
+    if (r.error.empty() && by_length && !(sim.pushedLength() > pushed_before)) {
+      r.error = "pushed length stopped advancing at L = " + jsonNumber(pushed_before) + " m";
+    }
+    if (!r.error.empty()) {  // keep the rows so far; the state now is not worth a row
+      std::fprintf(stderr, "%sthin_ice_run: simulation stopped at t = %.6g s: %s\n",
+                   ::isatty(STDERR_FILENO) ? "\n" : "", sim.time(), r.error.c_str());
+      break;
+    }
+    r.last = sim.loads();
+    csv << loadsRow(r.last, panels) << std::flush;
+    r.length.push_back(r.last.pushed_length);
+    r.load.push_back(r.last.horizontal_calibrated);
+    left = stepsLeft();
+    const double wall = std::chrono::duration<double>(Clock::now() - start).count();
+    progress.report(fraction(), r.last, wall, left <= 0);
+    if (snapshotDue(fraction(), left <= 0)) writeSnapshot(sim, snapshot_dir, row);
+  }
+  r.wall = std::chrono::duration<double>(Clock::now() - start).count();
+  csv.close();
+  if (!csv || std::rename((csv_path + ".partial").c_str(), csv_path.c_str()) != 0) {
+    throw std::runtime_error("cannot finish '" + csv_path + "'");
+  }
+  return r;
+}
+
+std::string summaryJson(const Simulation& sim, const Options& o, const RunResult& r,
+                        const thin_ice::LoadStatistics& s, double setup_wall) {
+  const thin_ice::Scenario& sc = sim.scenario();
+  const LoadSample& last = r.last;  // after a blow-up sim.loads() is not to be trusted
+  const double cell_steps = double(sim.cellCount()) * double(sim.stepCount());
+  std::ostringstream j;
+  auto num = [](double v) { return jsonNumber(v); };
+  j << "{\n  \"status\": " << jsonString(r.error.empty() ? "completed" : "unhealthy")
+    << ",\n  \"error\": " << (r.error.empty() ? "null" : jsonString(r.error))
+    << ",\n  \"scenario\": {\"name\": " << jsonString(sc.name) << ", \"file\": "
+    << jsonString(sc.source) << ", \"hash\": " << jsonString(sc.hash) << ", \"overrides\": [";
+  for (std::size_t k = 0; k < sc.overrides.size(); ++k) {
+    j << (k ? ", " : "") << jsonString(sc.overrides[k]);
+  }
+  j << "]},\n  \"backend\": " << jsonString(sim.backendName())
+    << ", \"backend_note\": " << jsonString(sim.backendNote())
+    << ",\n  \"cells\": " << sim.cellCount() << ", \"time_step_s\": " << num(sim.timeStep())
+    << ", \"critical_time_step_s\": " << num(sim.criticalTimeStep())
+    << ",\n  \"output_interval_s\": " << num(o.output_interval)
+    << ",\n  \"target\": {\"" << (o.until_length > 0.0 ? "pushed_length_m" : "time_s") << "\": "
+    << num(o.until_length > 0.0 ? o.until_length : o.until_time) << "}"
+    << ",\n  \"steps\": " << sim.stepCount() << ", \"simulated_time_s\": " << num(sim.time())
+    << ", \"pushed_length_m\": " << num(sim.pushedLength())
+    << ",\n  \"setup_wall_time_s\": " << num(setup_wall) << ", \"wall_time_s\": " << num(r.wall)
+    << ",\n  \"cell_steps_per_second\": " << num(r.wall > 0.0 ? cell_steps / r.wall : NAN)
+    << ", \"real_time_factor\": " << num(r.wall > 0.0 ? sim.time() / r.wall : NAN)
+    << ",\n  \"intact_bonds\": " << last.intact_bonds << ", \"broken_bonds\": " << last.broken_bonds
+    << ",\n  \"calibration_factor\": " << num(sc.params.structure.calibration_factor)
+    << ",\n  \"load\": {\n    \"quantity\": \"horizontal_calibrated_N against pushed_length_m\""
+    << ",\n    \"samples\": " << s.samples
+    << ",\n    \"peak_N\": " << num(s.peak_load) << ", \"peak_at_m\": " << num(s.peak_length)
+    << ",\n    \"phase1_slope_N_per_m\": " << num(s.phase1_slope)
+    << ", \"phase1_range_m\": [" << num(s.phase1_begin) << ", " << num(s.phase1_end) << "]"
+    << ",\n    \"steady_found\": " << (s.steady_found ? "true" : "false")
+    << ",\n    \"steady_window_m\": [" << num(s.steady_begin) << ", " << num(s.steady_end) << "]"
+    << ",\n    \"steady_mean_N\": " << num(s.steady_mean) << ", \"steady_std_N\": "
+    << num(s.steady_std) << ", \"steady_samples\": " << s.steady_samples
+    << ",\n    \"steady_rule\": " << jsonString(s.steady_rule) << "\n  }";
+  j << ",\n  \"experiment\": " << (experimentFor(sc.name) ? "" : "null");
+  if (const Experiment* e = experimentFor(sc.name)) {
+    j << "{\"series\": " << jsonString(e->series) << ", \"source\": " << jsonString(e->source)
+      << ", \"steady_mean_N\": " << num(e->mean) << ", \"peak_N\": " << num(e->peak)
+      << ",\n    \"steady_mean_error_percent\": " << num(100.0 * (s.steady_mean - e->mean) / e->mean)
+      << ", \"peak_error_percent\": " << num(100.0 * (s.peak_load - e->peak) / e->peak) << "}";
+  }
+  j << "\n}\n";
+  return j.str();
+}
+
+void printReport(const Simulation& sim, const Options& o, const thin_ice::LoadStatistics& s) {
+  std::printf("%s (%s): t = %.4g s, L = %.4g m, %ld steps\n  peak %.5g N at L = %.4g m; phase-1 "
+              "slope %.5g N/m\n  %s\n", sim.scenario().name.c_str(), sim.backendName().c_str(),
+              sim.time(), sim.pushedLength(), sim.stepCount(), s.peak_load, s.peak_length,
+              s.phase1_slope, s.steady_rule.c_str());
+  if (const Experiment* e = experimentFor(sim.scenario().name)) {
+    std::printf("  experiment (%s): mean %.0f N (%+.1f%%), peak %.0f N (%+.1f%%)\n", e->source,
+                e->mean, 100.0 * (s.steady_mean - e->mean) / e->mean, e->peak,
+                100.0 * (s.peak_load - e->peak) / e->peak);
+  }
+  std::printf("wrote %s/loads.csv and %s/summary.json\n", o.out.c_str(), o.out.c_str());
+}
+
+/// Loads the scenario and builds the simulation; creates nothing on disk.
+std::unique_ptr<Simulation> prepare(const Options& o) {
+  const thin_ice::Scenario scenario = thin_ice::loadScenario(o.scenario, o.overrides);
+  auto sim = std::make_unique<Simulation>(scenario, o.backend);
+  if (o.until_length > 0.0 && !(sim->pusherVelocity() > 0.0)) {
+    throw UsageError("--until-length needs pusher.velocity > 0 m/s; the scenario has " +
+                     jsonNumber(sim->pusherVelocity()) + " m/s (use --until-time)");
+  }
+  return sim;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Clock::time_point setup_start = Clock::now();
+  Options options;
+  std::unique_ptr<Simulation> sim;
+  try {
+    options = parseOptions(argc, argv);
+    if (options.help) return std::printf("%s", kUsage) < 0;
+    sim = prepare(options);
+  } catch (const UsageError& e) {
+    std::cerr << "thin_ice_run: " << e.what() << "\n" << kUsage;
+    return 2;
+  } catch (const std::exception& e) {  // ScenarioError: 2; e.g. no CUDA device: 1
+    std::cerr << "thin_ice_run: " << e.what() << "\n";
+    return dynamic_cast<const thin_ice::ScenarioError*>(&e) ? 2 : 1;
+  }
+  try {
+    const double setup_wall = std::chrono::duration<double>(Clock::now() - setup_start).count();
+    std::filesystem::create_directories(options.out + (options.snapshots > 0 ? "/snapshots" : ""));
+    const RunResult result = runSimulation(*sim, options);
+    const auto stats = thin_ice::analyseLoadHistory(result.length, result.load);
+    thin_ice::writeFileAtomically(options.out + "/summary.json",
+                                  summaryJson(*sim, options, result, stats, setup_wall));
+    printReport(*sim, options, stats);
+    return result.error.empty() ? 0 : 3;
+  } catch (const std::exception& e) {
+    std::cerr << "thin_ice_run: " << e.what() << "\n";
+    return 1;
+  }
+}

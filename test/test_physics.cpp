@@ -1,0 +1,231 @@
+// The laws of include/thin_ice_sim/physics/, one at a time, against answers worked out by hand.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "thin_ice_sim/physics/bond.hpp"
+#include "thin_ice_sim/physics/contact.hpp"
+#include "thin_ice_sim/physics/integrate.hpp"
+#include "thin_ice_sim/physics/plane_contact.hpp"
+#include "thin_ice_sim/physics/smoothing.hpp"
+#include "thin_ice_sim/physics/water.hpp"
+
+namespace thin_ice {
+namespace {
+
+constexpr double kTolTable = 6e-4;  // Table 2 prints three decimals, 0.0625 rounded up to 0.063
+constexpr double kTolExact = 1e-12;    // closed-form arithmetic, relative
+
+TEST(Smoothing, ReproducesTable2) {
+  const double z[] = {0.0, 0.25, 0.5, 0.75, 1.0};
+  const double strong[] = {1.000, 0.866, 0.707, 0.500, 0.0};
+  const double medium[] = {1.000, 0.750, 0.500, 0.250, 0.0};
+  const double weak[] = {1.000, 0.563, 0.250, 0.063, 0.0};
+  for (int k = 0; k < 5; ++k) {
+    EXPECT_NEAR(smoothing(z[k], 0.5), strong[k], kTolTable) << "z = " << z[k];
+    EXPECT_NEAR(smoothing(z[k], 1.0), medium[k], kTolTable) << "z = " << z[k];
+    EXPECT_NEAR(smoothing(z[k], 2.0), weak[k], kTolTable) << "z = " << z[k];
+  }
+  EXPECT_EQ(smoothing(1.5, 1.0), 0.0);  // K(z > 1) = 0, Eq. (5)
+  EXPECT_NEAR(smoothing(0.3, 1.5), std::pow(0.7, 1.5), kTolExact);
+}
+
+TEST(Water, FloatingCellSettlesAtTheDraft) {
+  // A 0.2 m square, h = 0.05 m, rho_i = 920: draft = 0.92 h, centroid at h/2 - 0.92 h.
+  const WaterConstants w = {1000.0, 9.81, 0.05, 20.0, 0.5, 200.0, 1.0};
+  const double area = 0.04, mass = 920.0 * area * 0.05, j = 0.04 * 0.04 / 6.0;
+  const double z_draft = 0.5 * 0.05 - 0.92 * 0.05;
+  EXPECT_NEAR(waterForce(w, mass, area, j, z_draft, {0, 0}, 0.0, 0.0).vertical, 0.0, 1e-12);
+  // Displaced by 1 mm down: restoring force rho_w g A 1e-3 upwards.
+  EXPECT_NEAR(waterForce(w, mass, area, j, z_draft - 1e-3, {0, 0}, 0.0, 0.0).vertical, 1000 * 9.81 * area * 1e-3,
+              1e-9);
+  // Dropped at the waterline, it comes to rest at the draft.
+  CellMotion c = {0, 0, 0.0, 0, 0, 0, 0, 0};
+  const double dt = 1e-4;
+  for (int step = 0; step < 100000; ++step) {
+    const WaterForce f = waterForce(w, mass, area, j, c.z, {c.vx, c.vy}, c.vz, c.wz);
+    integrateSymplecticEuler(c, f.horizontal.x, f.horizontal.y, f.vertical, f.torque, 1.0 / mass, 1.0, dt);
+  }
+  EXPECT_NEAR(c.z, z_draft, 1e-6);
+  EXPECT_NEAR(c.vz, 0.0, 1e-6);
+}
+
+std::vector<Vec2> square(Vec2 centre, double side) {
+  const double a = 0.5 * side;
+  return {centre + Vec2{-a, -a}, centre + Vec2{a, -a}, centre + Vec2{a, a}, centre + Vec2{-a, a}};
+}
+
+ContactConstants iceContact() {
+  return {0.05, 3.0 * 300e6 / 0.7, 3.0 * 300e6 / 0.7, 1.0, 1.0, 0.3, 0.2, 1e-3};
+}
+
+TEST(Contact, HorizontalForceIsEquation1TimesHCubed) {
+  // Squares 0.2 m, overlapping by 1 mm along x, level: S = 0.2e-3 m^2, L = 0.2 m,
+  // F = (3E/(1-nu)) h S/L = (9e8/0.7) 0.05 1e-3 = 64285.7 N along +x on j. No vertical force.
+  const auto a = square({0.0, 0.0}, 0.2), b = square({0.199, 0.0}, 0.2);
+  const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
+  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
+  const BodyState j = {{0.199, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
+  const PairForce f = demContactForce(o, i, j, iceContact());
+  EXPECT_NEAR(f.force_on_j.x, 9e8 / 0.7 * 0.05 * 1e-3, 1e-6 * 64285.7);
+  EXPECT_NEAR(f.force_on_j.y, 0.0, 1e-9);
+  EXPECT_EQ(f.fz_on_j, 0.0);
+}
+
+TEST(Contact, VerticalForceIsEquation3) {
+  // Same overlap, j 0.02 m higher: z = 0.4, K = 0.6 (n = 1), Z = 0.03 m,
+  // F_v = 0.6 * 0.03 * (9e8/0.7) * 2e-4 / 0.05 = 92571.4 N upwards on j.
+  const auto a = square({0.0, 0.0}, 0.2), b = square({0.199, 0.0}, 0.2);
+  const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
+  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
+  const BodyState j = {{0.199, 0.0}, 0.02, {0, 0}, 0.0, 0.0, 1.84};
+  const PairForce f = demContactForce(o, i, j, iceContact());
+  EXPECT_NEAR(f.fz_on_j, 0.6 * 0.03 * 9e8 / 0.7 * 2e-4 / 0.05, 1e-6 * 92571.4);
+  EXPECT_NEAR(f.force_on_j.x, 0.6 * 9e8 / 0.7 * 0.05 * 1e-3, 1e-6 * 38571.4);
+}
+
+TEST(Contact, EqualAndOppositeWhicheverOrder) {
+  const auto a = square({0.0, 0.0}, 0.2), b = square({0.15, 0.05}, 0.2);
+  const BodyState i = {{0.0, 0.0}, 0.001, {0.1, 0.02}, 0.0, 0.3, 1.84};
+  const BodyState j = {{0.15, 0.05}, 0.0, {-0.05, 0.0}, 0.01, -0.2, 1.5};
+  const PairForce ij = demContactForce(intersectConvexPolygons(a.data(), 4, b.data(), 4), i, j, iceContact());
+  const PairForce ji = demContactForce(intersectConvexPolygons(b.data(), 4, a.data(), 4), j, i, iceContact());
+  // The force on j computed as (i, j) is minus the force on j computed as (j, i) (there: on "i").
+  EXPECT_NEAR(ij.force_on_j.x, -ji.force_on_j.x, 1e-9 * std::fabs(ij.force_on_j.x));
+  EXPECT_NEAR(ij.force_on_j.y, -ji.force_on_j.y, 1e-9 * std::fabs(ij.force_on_j.x));
+  EXPECT_NEAR(ij.fz_on_j, -ji.fz_on_j, 1e-9 * std::fabs(ij.fz_on_j) + 1e-12);
+}
+
+TEST(Contact, CollisionConservesMomentumAndGainsNoEnergy) {
+  // Two free squares (no water) collide head-on and slightly off-centre.
+  const double h = 0.05, side = 0.2, mass_a = 1.84, mass_b = 1.2;
+  const double inertia_a = mass_a * side * side / 6.0, inertia_b = mass_b * side * side / 6.0;
+  CellMotion a = {0.0, 0.0, 0.0, 0.0, 0.3, 0.0, 0.0, 0.0};
+  CellMotion b = {0.21, 0.03, 0.0, 0.0, -0.2, 0.0, 0.0, 0.0};
+  auto energy = [&] {
+    return 0.5 * mass_a * (a.vx * a.vx + a.vy * a.vy) + 0.5 * mass_b * (b.vx * b.vx + b.vy * b.vy) +
+           0.5 * inertia_a * a.wz * a.wz + 0.5 * inertia_b * b.wz * b.wz;
+  };
+  const double px0 = mass_a * a.vx + mass_b * b.vx, py0 = mass_a * a.vy + mass_b * b.vy;
+  const double e0 = energy();
+  ContactConstants c = iceContact();
+  c.thickness = h;
+  bool touched = false;
+  for (int step = 0; step < 40000; ++step) {
+    const auto pa = square({0, 0}, side), pb = square({0, 0}, side);
+    std::vector<Vec2> wa, wb;
+    for (const Vec2& v : pa) wa.push_back(Vec2{a.x, a.y} + rotate(v, std::cos(a.yaw), std::sin(a.yaw)));
+    for (const Vec2& v : pb) wb.push_back(Vec2{b.x, b.y} + rotate(v, std::cos(b.yaw), std::sin(b.yaw)));
+    const BodyState ia = {{a.x, a.y}, a.z, {a.vx, a.vy}, a.vz, a.wz, mass_a};
+    const BodyState ib = {{b.x, b.y}, b.z, {b.vx, b.vy}, b.vz, b.wz, mass_b};
+    const PairForce f = demContactForce(intersectConvexPolygons(wa.data(), 4, wb.data(), 4), ia, ib, c);
+    touched = touched || f.touching;
+    const double ta = cross(f.point - Vec2{a.x, a.y}, -f.force_on_j);
+    const double tb = cross(f.point - Vec2{b.x, b.y}, f.force_on_j);
+    integrateSymplecticEuler(a, -f.force_on_j.x, -f.force_on_j.y, -f.fz_on_j, ta, 1 / mass_a, 1 / inertia_a, 1e-6);
+    integrateSymplecticEuler(b, f.force_on_j.x, f.force_on_j.y, f.fz_on_j, tb, 1 / mass_b, 1 / inertia_b, 1e-6);
+  }
+  ASSERT_TRUE(touched);
+  EXPECT_LT(b.vx - a.vx, 0.5);  // they bounced: no longer closing at 0.5 m/s
+  EXPECT_GT(b.vx - a.vx, 0.0);
+  EXPECT_NEAR(mass_a * a.vx + mass_b * b.vx, px0, 1e-9);
+  EXPECT_NEAR(mass_a * a.vy + mass_b * b.vy, py0, 1e-9);
+  EXPECT_LE(energy(), e0 * (1.0 + 1e-6));
+}
+
+BondRest unitBond() {
+  // Two 0.2 m cells side by side along x sharing an edge of 0.2 m; centroids 0.2 m apart.
+  BondRest b;
+  b.anchor_i = {0.1, 0.0};
+  b.anchor_j = {-0.1, 0.0};
+  b.normal = {1.0, 0.0};
+  b.edge_length = 0.2;
+  b.distance = 0.2;
+  b.k_normal = 300e6 * 0.05 * 0.2 / 0.2;  // E h L_e / d
+  b.k_shear = 0.4 * b.k_normal;
+  b.k_vertical = 1e4;
+  return b;
+}
+
+BondConstants bondLaw(double coupling, bool bending) { return {0.05, 1.0, 1.0, 100e3, 130e3, coupling, bending, 0.0}; }
+
+TEST(Bond, PulledApartItBreaksAtTheFlexuralStrength) {
+  // sigma_h = k_n u / (h L_e) = sigma_f at u = sigma_f h L_e / k_n = 1e5 * 0.01 / 1.5e7 = 6.667e-5 m.
+  const BondRest b = unitBond();
+  const double u_fail = 100e3 * 0.05 * 0.2 / b.k_normal;
+  for (const double factor : {0.99, 1.01}) {
+    const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
+    const BodyState j = {{0.2 + factor * u_fail, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
+    const BondForce f = rmibBondForce(b, i, 0.0, j, 0.0, bondLaw(0.0, true));
+    EXPECT_NEAR(f.sigma_h, factor * 100e3, 1e-6 * 100e3);
+    EXPECT_NEAR(f.force_on_j.x, -b.k_normal * factor * u_fail, 1e-6);  // pulls j back
+    EXPECT_EQ(f.breaks, factor > 1.0);
+  }
+}
+
+TEST(Bond, VerticalOffsetBreaksAtEquation13WithAndWithoutCompression) {
+  // Bending reading: sigma_v = 3 |F_v| d / (L_e h^2), F_v = K_v k_v dz.
+  const BondRest b = unitBond();
+  const double h = 0.05;
+  auto sigmaV = [&](double dz) { return 3.0 * (1.0 - dz / h) * b.k_vertical * dz * b.distance / (b.edge_length * h * h); };
+  // Find dz with sigma_v = target by bisection on the closed form.
+  auto offsetFor = [&](double target) {
+    double lo = 0.0, hi = 0.5 * h;
+    for (int k = 0; k < 200; ++k) ((sigmaV(0.5 * (lo + hi)) < target) ? lo : hi) = 0.5 * (lo + hi);
+    return lo;
+  };
+  // No compression: threshold sigma_f.
+  for (const double factor : {0.99, 1.01}) {
+    const double dz = offsetFor(factor * 100e3);
+    const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
+    const BodyState j = {{0.2, 0.0}, dz, {0, 0}, 0.0, 0.0, 1.84};
+    EXPECT_EQ(rmibBondForce(b, i, 0.0, j, 0.0, bondLaw(0.5, true)).breaks, factor > 1.0);
+  }
+  // Compressed to sigma_c = 40 kPa with k = 0.5: threshold 100 - 20 = 80 kPa.
+  const double squeeze = 40e3 * h * b.edge_length / b.k_normal;
+  for (const double factor : {0.99, 1.01}) {
+    const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
+    // K_n also falls with the offset: compress a little more so that sigma_c is 40 kPa.
+    const double dz = offsetFor(factor * 80e3);
+    const BodyState j = {{0.2 - squeeze / (1.0 - dz / h), 0.0}, dz, {0, 0}, 0.0, 0.0, 1.84};
+    const BondForce f = rmibBondForce(b, i, 0.0, j, 0.0, bondLaw(0.5, true));
+    EXPECT_NEAR(f.sigma_c, 40e3, 1e-6 * 40e3);
+    EXPECT_EQ(f.breaks, factor > 1.0) << "factor " << factor;
+  }
+}
+
+TEST(PlaneContact, VerticalPlaneVolumeByHand) {
+  // Square 0.2 m slab, h = 0.05, 1 mm beyond the plane x = 0.099 (solid x > 0.099):
+  // V = 0.2 * 0.001 * 0.05 = 1e-5 m^3, centroid x = 0.0995.
+  const auto poly = square({0.0, 0.0}, 0.2);
+  const RigidPlane plane = {-1.0, 0.0, 0.0, -0.099};
+  const SlabPenetration p = slabPenetration(poly.data(), 4, -0.025, 0.025, plane);
+  EXPECT_NEAR(p.volume, 1e-5, 1e-15);
+  EXPECT_NEAR(p.centroid.x, 0.0995, 1e-12);
+  EXPECT_NEAR(p.centroid.y, 0.0, 1e-12);
+}
+
+TEST(PlaneContact, InclinedFaceVolumeByHandAndForceNormalToIt) {
+  // Face at 60 deg through x = 0.1 at z = 0, solid towards +x: m = (-sin 60, 0, cos 60).
+  // A square slab [-0.1, 0.1]^2 x [-0.025, 0.025]: at level z the face is at x = 0.1 + z cot 60,
+  // so the cut area is 0.2 * max(0, -z cot 60) for z < 0: V = 0.2 cot60 * 0.025^2 / 2.
+  const double a = M_PI / 3.0;
+  const RigidPlane face = {-std::sin(a), 0.0, std::cos(a), -std::sin(a) * 0.1};
+  const auto poly = square({0.0, 0.0}, 0.2);
+  const SlabPenetration p = slabPenetration(poly.data(), 4, -0.025, 0.025, face);
+  const double expected = 0.2 / std::tan(a) * 0.025 * 0.025 / 2.0;
+  EXPECT_NEAR(p.volume, expected, 1e-12 * expected + 1e-18);
+  // At rest, the force is K V / h along m: normal to the face, pushing the ice back and up.
+  const PlaneContactConstants law = {1.7e11, 0.05, 0.1, 0.2, 1e-3};
+  const PlaneContactForce f = planeContactForce(p, face, law, {0, 0}, {0, 0}, 0.0, 0.0, 1.84, 0.04, 0.0);
+  const double magnitude = 1.7e11 * expected / 0.05;
+  EXPECT_NEAR(f.fx, magnitude * face.mx, 1e-9 * magnitude);
+  EXPECT_NEAR(f.fy, 0.0, 1e-9 * magnitude);
+  EXPECT_NEAR(f.fz, magnitude * face.mz, 1e-9 * magnitude);
+  EXPECT_LT(f.fx, 0.0);
+  EXPECT_GT(f.fz, 0.0);
+}
+
+}  // namespace
+}  // namespace thin_ice

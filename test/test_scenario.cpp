@@ -1,0 +1,402 @@
+// Scenario files (scenario.hpp): the shipped scenarios load and carry Table 5's numbers,
+// overrides work, and every kind of bad input gives a one-line ScenarioError naming the file,
+// the key and what is allowed or expected. Bad files are made by editing the text of quick.yaml.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdint>
+#include <filesystem>
+#include <fstream>
+#include <initializer_list>
+#include <iomanip>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "thin_ice_sim/scenario.hpp"
+
+namespace thin_ice {
+namespace {
+
+namespace fs = std::filesystem;
+
+const std::string kSourceDir = THIN_ICE_SOURCE_DIR;
+const std::string kScenarioDir = kSourceDir + "/config/scenarios/";
+
+// Relative tolerance on numbers read from YAML text (they parse to the nearest double).
+constexpr double kTolRead = 1e-12;
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+std::vector<std::string> splitLines(const std::string& text) {
+  std::vector<std::string> lines;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) lines.push_back(line);
+  return lines;
+}
+
+/// `yaml` with the line of `section.key` replaced by `new_line` ("" removes it). The key's line
+/// is the first "  key:" after the line "section:" and before the next section.
+std::string withLine(const std::string& yaml, const std::string& section, const std::string& key,
+                     const std::string& new_line) {
+  std::vector<std::string> lines = splitLines(yaml);
+  bool in_section = false;
+  for (size_t i = 0; i < lines.size(); ++i) {
+    const std::string& line = lines[i];
+    if (!line.empty() && line[0] != ' ' && line[0] != '#') in_section = line == section + ":";
+    if (in_section && line.rfind("  " + key + ":", 0) == 0) {
+      if (new_line.empty()) {
+        lines.erase(lines.begin() + static_cast<long>(i));
+      } else {
+        lines[i] = new_line;
+      }
+      std::string out;
+      for (const std::string& l : lines) out += l + "\n";
+      return out;
+    }
+  }
+  throw std::logic_error("test setup: no " + section + "." + key + " in the YAML text");
+}
+
+/// `yaml` with `section.key` set to `value` (its comment dropped).
+std::string withValue(const std::string& yaml, const std::string& section, const std::string& key,
+                      const std::string& value) {
+  return withLine(yaml, section, key, "  " + key + ": " + value);
+}
+
+/// Reference 64-bit FNV-1a, as documented in scenario.cpp.
+std::string fnv1a(const std::string& bytes) {
+  std::uint64_t h = 14695981039346656037ULL;
+  for (const char c : bytes) {
+    h ^= static_cast<unsigned char>(c);
+    h *= 1099511628211ULL;
+  }
+  std::ostringstream hex;
+  hex << std::hex << std::setw(16) << std::setfill('0') << h;
+  return hex.str();
+}
+
+void expectNear(double expected, double actual, const char* what) {
+  EXPECT_NEAR(actual, expected, kTolRead * std::abs(expected)) << what;
+}
+
+/// Each test gets its own directory for the YAML files it writes.
+class ScenarioFileTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    dir_ = fs::path(::testing::TempDir()) /
+           ("thin_ice_scenario_" +
+            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
+    fs::remove_all(dir_);
+    fs::create_directories(dir_);
+    quick_ = readText(kScenarioDir + "quick.yaml");
+  }
+  void TearDown() override {
+    std::error_code ignored;
+    fs::remove_all(dir_, ignored);
+  }
+
+  std::string write(const std::string& name, const std::string& text) const {
+    const std::string path = (dir_ / name).string();
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+  }
+
+  /// The message of the ScenarioError that loading `path` throws ("" and a failure when none).
+  static std::string errorOf(const std::string& path,
+                             const std::vector<std::string>& overrides = {}) {
+    try {
+      loadScenario(path, overrides);
+    } catch (const ScenarioError& e) {
+      return e.what();
+    }
+    ADD_FAILURE() << "no ScenarioError for " << path;
+    return "";
+  }
+
+  /// Writes `text` as `name`, loads it, and checks the one-line message mentions every part.
+  void expectError(const std::string& name, const std::string& text,
+                   std::initializer_list<std::string> parts,
+                   const std::vector<std::string>& overrides = {}) const {
+    const std::string message = errorOf(write(name, text), overrides);
+    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
+    EXPECT_NE(message.find(name), std::string::npos) << "file name missing: " << message;
+    for (const std::string& part : parts) {
+      EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' missing: " << message;
+    }
+  }
+
+  fs::path dir_;
+  std::string quick_;
+};
+
+// ----- Shipped scenarios ----------------------------------------------------------------------
+
+TEST(Scenario, EveryShippedScenarioLoads) {
+  std::set<std::string> found;
+  for (const auto& entry : fs::directory_iterator(kScenarioDir)) {
+    if (entry.path().extension() != ".yaml") continue;
+    const std::string path = entry.path().string();
+    Scenario s;
+    ASSERT_NO_THROW(s = loadScenario(path)) << path;
+    EXPECT_EQ(s.name, entry.path().stem().string());
+    EXPECT_EQ(s.source, path);
+    EXPECT_EQ(s.hash, fnv1a(readText(path)));
+    EXPECT_NO_THROW(validateParams(s.params, path));
+    found.insert(s.name);
+  }
+  for (const char* name : {"W-1", "W-2", "W-3", "M-1", "M-2", "S-1", "S-2", "quick"}) {
+    EXPECT_EQ(found.count(name), 1u) << name << ".yaml is missing";
+  }
+}
+
+TEST(Scenario, M2ReproducesTable5AndTable4) {
+  const Params p = loadScenario(kScenarioDir + "M-2.yaml").params;
+  expectNear(0.051, p.ice.thickness, "h");
+  expectNear(920.0, p.ice.density, "rho");
+  expectNear(108e3, p.ice.flexural_strength, "sigma_f");
+  expectNear(130e3, p.ice.compressive_strength, "sigma_c");
+  expectNear(328e6, p.ice.youngs_modulus, "E");
+  // E_v is chosen so that the sheet of vertical shear springs has the floating-plate length
+  // l = [E h^3 / (12 (1 - nu^2) rho_w g)]^(1/4) (SPEC-NOTES): G_v = rho_w g l^2 / h, E_v = 2 (1 + nu) G_v.
+  // The file gives it to three significant digits.
+  const double plate_length = std::pow(328e6 * std::pow(0.051, 3) / (12.0 * (1.0 - 0.09) * 1000.0 * 9.81), 0.25);
+  EXPECT_NEAR(p.ice.vertical_modulus, 2.0 * 1.3 * 1000.0 * 9.81 * plate_length * plate_length / 0.051, 2e-3 * 3.19e5);
+  expectNear(1.0, p.ice.smoothing_exponent_h, "n (Table 1, medium)");
+  expectNear(1.0, p.ice.smoothing_exponent_v, "n_v");
+  EXPECT_NEAR(p.ice.compression_coupling, 0.5 * 108.0 / 130.0, 1e-3);
+  EXPECT_EQ(p.ice.vertical_stress, VerticalStressModel::kBending);
+  // Table 4 set-up.
+  expectNear(10.0, p.structure.width, "structure width");
+  expectNear(1.0, p.structure.height, "structure height");
+  expectNear(60.0, p.structure.angle_deg, "angle");
+  expectNear(0.5, p.structure.side_panel_length, "side panels");
+  expectNear(1.7e11, p.structure.stiffness, "K_struct");
+  expectNear(0.63, p.structure.calibration_factor, "alpha");
+  expectNear(0.05, p.pusher.velocity, "pusher");
+  EXPECT_TRUE(p.bottom.enabled);
+  expectNear(4.0, p.bottom.distance_from_structure, "false bottom");
+  expectNear(0.55, p.bottom.friction, "ice-bottom friction");
+  // The sheet and the numerics of the validation runs.
+  expectNear(24.0, p.sheet.length, "sheet length");
+  expectNear(10.0, p.sheet.width, "sheet width");
+  expectNear(10.0, p.channel.width, "channel width");
+  expectNear(25.0, p.structure.toe_x, "toe");
+  expectNear(0.2, p.sheet.cell_size, "cell size");
+  EXPECT_EQ(p.sheet.layout, SeedLayout::kJitteredGrid);
+  EXPECT_EQ(p.sheet.seed, 1u);
+  expectNear(5e-6, p.numerics.time_step, "dt");
+}
+
+TEST(Scenario, S1ReproducesTable5) {
+  const Params p = loadScenario(kScenarioDir + "S-1.yaml").params;
+  expectNear(0.052, p.ice.thickness, "h");
+  expectNear(915.0, p.ice.density, "rho");
+  expectNear(211e3, p.ice.flexural_strength, "sigma_f");
+  expectNear(214e3, p.ice.compressive_strength, "sigma_c");
+  expectNear(2023e6, p.ice.youngs_modulus, "E");
+  expectNear(0.5, p.ice.smoothing_exponent_h, "n (Table 1, strong)");
+  expectNear(0.5, p.ice.smoothing_exponent_v, "n_v");
+  EXPECT_NEAR(p.ice.compression_coupling, 0.5 * 211.0 / 214.0, 1e-3);
+}
+
+TEST(Scenario, WeakIceUsesSmoothingExponentTwo) {
+  for (const char* name : {"W-1", "W-2", "W-3"}) {
+    const Params p = loadScenario(kScenarioDir + name + ".yaml").params;
+    expectNear(2.0, p.ice.smoothing_exponent_h, name);
+    expectNear(2.0, p.ice.smoothing_exponent_v, name);
+  }
+}
+
+TEST(Scenario, QuickIsMediumIceOnASmallStrip) {
+  const Params quick = loadScenario(kScenarioDir + "quick.yaml").params;
+  const Params m2 = loadScenario(kScenarioDir + "M-2.yaml").params;
+  EXPECT_EQ(quick.ice.thickness, m2.ice.thickness);
+  EXPECT_EQ(quick.ice.flexural_strength, m2.ice.flexural_strength);
+  EXPECT_EQ(quick.ice.youngs_modulus, m2.ice.youngs_modulus);
+  const double cells =
+      quick.sheet.length * quick.sheet.width / (quick.sheet.cell_size * quick.sheet.cell_size);
+  EXPECT_LE(cells, 300.0);
+  EXPECT_GT(quick.structure.toe_x, quick.sheet.x_min + quick.sheet.length);
+  // The ice front reaches the structure within a couple of seconds.
+  const double gap = quick.structure.toe_x - (quick.sheet.x_min + quick.sheet.length);
+  EXPECT_LE(gap / quick.pusher.velocity, 2.0);
+}
+
+TEST(Scenario, ValidateParamsAcceptsDefaultsAndNamesTheSource) {
+  EXPECT_NO_THROW(validateParams(Params{}, "built in code"));
+  Params p;
+  p.ice.poisson_ratio = 0.5;
+  try {
+    validateParams(p, "built in code");
+    FAIL() << "nu = 0.5 accepted";
+  } catch (const ScenarioError& e) {
+    const std::string m = e.what();
+    EXPECT_EQ(m.rfind("built in code: ice.poisson_ratio = 0.5", 0), 0u) << m;
+    EXPECT_NE(m.find("allowed: [0, 0.5)"), std::string::npos) << m;
+  }
+}
+
+// ----- Overrides and defaults -----------------------------------------------------------------
+
+TEST_F(ScenarioFileTest, OverridesApplyAfterTheFileAndChangeTheHash) {
+  const std::string path = kScenarioDir + "quick.yaml";
+  const Scenario base = loadScenario(path);
+  const std::vector<std::string> overrides = {"ice.thickness=0.06", "ice.vertical_stress=shear",
+                                              "structure.panels=4", "bottom.enabled=false",
+                                              "sheet.seed=42"};
+  const Scenario s = loadScenario(path, overrides);
+  EXPECT_EQ(s.params.ice.thickness, 0.06);
+  EXPECT_EQ(s.params.ice.vertical_stress, VerticalStressModel::kShear);
+  EXPECT_EQ(s.params.structure.panels, 4);
+  EXPECT_FALSE(s.params.bottom.enabled);
+  EXPECT_EQ(s.params.sheet.seed, 42u);
+  EXPECT_EQ(s.params.ice.density, base.params.ice.density);  // untouched keys stay
+  EXPECT_EQ(s.overrides, overrides);
+  std::string hashed = readText(path);
+  for (const std::string& o : overrides) hashed += o + "\n";
+  EXPECT_EQ(s.hash, fnv1a(hashed));
+  EXPECT_NE(s.hash, base.hash);
+  EXPECT_EQ(loadScenario(path, overrides).hash, s.hash);
+}
+
+TEST_F(ScenarioFileTest, OptionalKeysAndSectionsTakeTheDefaults) {
+  std::string text = withLine(quick_, "ice", "friction_ice_ice", "");
+  text = withLine(text, "numerics", "threads", "");
+  const Params p = loadScenario(write("optional.yaml", text)).params;
+  EXPECT_EQ(p.ice.friction_ice_ice, IceParams{}.friction_ice_ice);
+  EXPECT_EQ(p.numerics.threads, NumericsParams{}.threads);
+}
+
+// ----- Bad input: one line naming the file, the key and what is allowed/expected --------------
+
+TEST_F(ScenarioFileTest, UnknownKey) {
+  expectError("unknown-key.yaml", withLine(quick_, "ice", "thickness", "  thicknes: 0.05"),
+              {"unknown key 'thicknes'", "section 'ice'", "allowed:", "thickness"});
+}
+
+TEST_F(ScenarioFileTest, UnknownSection) {
+  expectError("unknown-section.yaml", quick_ + "waves:\n  height: 1.0\n",
+              {"unknown section 'waves'", "allowed:", "numerics"});
+}
+
+TEST_F(ScenarioFileTest, MissingRequiredKey) {
+  expectError("missing-key.yaml", withLine(quick_, "ice", "thickness", ""),
+              {"missing required key ice.thickness", "expected a number"});
+  expectError("missing-toe.yaml", withLine(quick_, "structure", "toe_x", ""),
+              {"missing required key structure.toe_x", "expected"});
+}
+
+TEST_F(ScenarioFileTest, WrongTypes) {
+  expectError("text-for-number.yaml", withValue(quick_, "ice", "thickness", "abc"),
+              {"ice.thickness", "expected a number", "'abc'"});
+  expectError("quoted-number.yaml", withValue(quick_, "ice", "thickness", "\"0.05\""),
+              {"ice.thickness", "expected a number", "quoted"});
+  expectError("list-for-number.yaml", withValue(quick_, "ice", "density", "[920, 930]"),
+              {"ice.density", "expected a number", "a list"});
+  expectError("float-for-integer.yaml", withValue(quick_, "structure", "panels", "2.5"),
+              {"structure.panels", "expected an integer", "'2.5'"});
+  expectError("negative-seed.yaml", withValue(quick_, "sheet", "seed", "-1"),
+              {"sheet.seed", "expected a non-negative integer"});
+  expectError("non-bool.yaml", withValue(quick_, "bottom", "enabled", "maybe"),
+              {"bottom.enabled", "expected true or false", "'maybe'"});
+  expectError("bad-enum.yaml", withValue(quick_, "ice", "vertical_stress", "torsion"),
+              {"ice.vertical_stress", "expected shear or bending", "'torsion'"});
+  expectError("bad-layout.yaml", withValue(quick_, "sheet", "layout", "hexagonal"),
+              {"sheet.layout", "expected jittered_grid or poisson_disk"});
+}
+
+TEST_F(ScenarioFileTest, NonPositiveThickness) {
+  expectError("zero-thickness.yaml", withValue(quick_, "ice", "thickness", "0"),
+              {"ice.thickness = 0 is invalid", "allowed: > 0 m"});
+  expectError("negative-thickness.yaml", withValue(quick_, "ice", "thickness", "-0.05"),
+              {"ice.thickness = -0.05 is invalid", "allowed: > 0 m"});
+}
+
+TEST_F(ScenarioFileTest, PoissonRatioOfOneHalf) {
+  expectError("nu.yaml", withValue(quick_, "ice", "poisson_ratio", "0.5"),
+              {"ice.poisson_ratio = 0.5 is invalid", "allowed: [0, 0.5)"});
+}
+
+TEST_F(ScenarioFileTest, NegativeDensity) {
+  expectError("density.yaml", withValue(quick_, "ice", "density", "-920"),
+              {"ice.density = -920 is invalid", "allowed: > 0"});
+}
+
+TEST_F(ScenarioFileTest, NotFinite) {
+  expectError("nan.yaml", withValue(quick_, "water", "gravity", ".nan"),
+              {"water.gravity = nan is invalid", "finite", "allowed"});
+}
+
+TEST_F(ScenarioFileTest, CellSizeBelowThicknessAndAreaRatio) {
+  expectError("tiny-cells.yaml", withValue(quick_, "sheet", "cell_size", "0.04"),
+              {"sheet.cell_size = 0.04 is invalid", "thickness", "allowed: >= sqrt(10) h"});
+  expectError("small-cells.yaml", withValue(quick_, "sheet", "cell_size", "0.12"),
+              {"sheet.cell_size = 0.12 is invalid", "A/h^2 > 10", "allowed"});
+}
+
+TEST_F(ScenarioFileTest, SheetChecksFromIceSheetValidate) {
+  expectError("jitter.yaml", withValue(quick_, "sheet", "jitter", "0.7"),
+              {"sheet.jitter = 0.7 is invalid", "allowed: [0, 0.5]"});
+}
+
+TEST_F(ScenarioFileTest, RangeChecksOnOtherSections) {
+  expectError("angle.yaml", withValue(quick_, "structure", "angle_deg", "90"),
+              {"structure.angle_deg = 90 is invalid", "allowed: (0, 90)"});
+  expectError("damping.yaml", withValue(quick_, "ice", "bond_damping_ratio", "1.5"),
+              {"ice.bond_damping_ratio = 1.5 is invalid", "allowed: [0, 1]"});
+  expectError("toe.yaml", withValue(quick_, "structure", "toe_x", "2.0"),
+              {"structure.toe_x = 2 is invalid", "allowed: >= 3 m"});
+}
+
+TEST_F(ScenarioFileTest, DuplicateKey) {
+  const std::string twice =
+      withLine(quick_, "ice", "thickness", "  thickness: 0.05\n  thickness: 0.06");
+  expectError("duplicate.yaml", twice, {"ice.thickness", "twice"});
+}
+
+TEST_F(ScenarioFileTest, BadOverrides) {
+  const std::string path = write("override.yaml", quick_);
+  const std::string no_value = errorOf(path, {"ice.thickness"});
+  for (const char* part : {"override.yaml", "ice.thickness", "expected section.key=value"}) {
+    EXPECT_NE(no_value.find(part), std::string::npos) << no_value;
+  }
+  const std::string bad_value = errorOf(path, {"ice.thickness=abc"});
+  EXPECT_NE(bad_value.find("override 'ice.thickness=abc'"), std::string::npos) << bad_value;
+  EXPECT_NE(bad_value.find("expected a number"), std::string::npos) << bad_value;
+  const std::string out_of_range = errorOf(path, {"ice.thickness=-0.06"});
+  EXPECT_NE(out_of_range.find("override 'ice.thickness=-0.06': ice.thickness = -0.06 is invalid"),
+            std::string::npos)
+      << out_of_range;
+  const std::string cross = errorOf(path, {"ice.thickness=0.1"});  // cell 0.2 < sqrt(10) 0.1
+  EXPECT_NE(cross.find("override 'ice.thickness=0.1': sheet.cell_size"), std::string::npos)
+      << cross;
+  const std::string unknown = errorOf(path, {"ice.thicknes=0.06"});
+  EXPECT_NE(unknown.find("unknown key 'thicknes'"), std::string::npos) << unknown;
+  EXPECT_NE(unknown.find("allowed:"), std::string::npos) << unknown;
+}
+
+TEST_F(ScenarioFileTest, NonexistentFile) {
+  const std::string path = (dir_ / "no-such-scenario.yaml").string();
+  const std::string message = errorOf(path);
+  EXPECT_NE(message.find("no-such-scenario.yaml"), std::string::npos) << message;
+  EXPECT_NE(message.find("no such scenario file"), std::string::npos) << message;
+}
+
+TEST_F(ScenarioFileTest, YamlSyntaxError) {
+  expectError("syntax.yaml", withLine(quick_, "ice", "thickness", "  thickness: [0.05"),
+              {"YAML syntax error", "line"});
+  expectError("not-a-map.yaml", "- just\n- a list\n", {"expected a map of sections"});
+  expectError("empty.yaml", "", {"expected a map of sections", "got nothing"});
+}
+
+}  // namespace
+}  // namespace thin_ice

@@ -1,0 +1,100 @@
+// The whole engine on a shortened quick.yaml: the sheet meets the structure, bonds break, the
+// structure is loaded; and the run is bit-identical on one and on two threads.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "thin_ice_sim/scenario.hpp"
+#include "thin_ice_sim/simulation.hpp"
+
+namespace thin_ice {
+namespace {
+
+const std::string kQuick = std::string(THIN_ICE_SOURCE_DIR) + "/config/scenarios/quick.yaml";
+
+/// quick.yaml cut to a 1 m strip 0.1 m from the structure: first contact after ~0.27 s.
+Scenario shortStrip(int threads) {
+  return loadScenario(kQuick, {"sheet.length=1.0", "structure.toe_x=1.1", "bottom.distance_from_structure=0.5",
+                               "numerics.threads=" + std::to_string(threads)});
+}
+
+TEST(Simulation, SheetMeetsTheStructureBreaksBondsAndLoadsIt) {
+  Simulation sim(shortStrip(0), BackendKind::kCpu);
+  ASSERT_GT(sim.cellCount(), 10);
+  double peak = 0.0;
+  int broken = 0;
+  while (sim.time() < 0.45 && sim.healthy()) {
+    sim.advance(0.01);
+    peak = std::max(peak, sim.loads().horizontal_raw);
+    broken = sim.loads().broken_bonds;
+  }
+  ASSERT_TRUE(sim.healthy()) << sim.lastError();
+  EXPECT_GT(peak, 10.0);   // [N] the ice pushes the structure
+  EXPECT_GT(broken, 0);    // and breaks against it
+  const LoadSample l = sim.loads();
+  EXPECT_NEAR(l.horizontal_calibrated, 0.63 * l.horizontal_raw, 1e-9 * std::fabs(l.horizontal_raw) + 1e-12);
+  EXPECT_NEAR(sim.pushedLength(), 0.2 * sim.time(), 1e-9);
+  double panel_sum = 0.0;
+  for (double f : l.panel_horizontal) panel_sum += f;
+  EXPECT_NEAR(panel_sum, l.horizontal_raw, 1e-9 * std::fabs(l.horizontal_raw) + 1e-9);
+}
+
+TEST(Simulation, BitIdenticalOnOneAndTwoThreads) {
+  Simulation one(shortStrip(1), BackendKind::kCpu), two(shortStrip(2), BackendKind::kCpu);
+  while (one.time() < 0.32) {
+    one.advance(0.01);
+    two.advance(0.01);
+    const LoadSample a = one.loads(), b = two.loads();
+    ASSERT_EQ(a.horizontal_raw, b.horizontal_raw) << "t = " << a.time;
+    ASSERT_EQ(a.vertical_raw, b.vertical_raw);
+    ASSERT_EQ(a.broken_bonds, b.broken_bonds);
+    ASSERT_EQ(a.contacts, b.contacts);
+  }
+  const std::vector<CellSnapshot> ca = one.cells(), cb = two.cells();
+  for (size_t k = 0; k < ca.size(); ++k) {
+    ASSERT_EQ(ca[k].x, cb[k].x);
+    ASSERT_EQ(ca[k].z, cb[k].z);
+    ASSERT_EQ(ca[k].yaw, cb[k].yaw);
+  }
+  EXPECT_GT(one.loads().horizontal_raw + one.loads().broken_bonds, 0.0);  // the span reached the structure
+}
+
+TEST(Simulation, PauseResetAndPusherCommand) {
+  Simulation sim(shortStrip(0), BackendKind::kCpu);
+  sim.pause();
+  sim.advance(0.01);
+  EXPECT_EQ(sim.time(), 0.0);  // paused: advance does nothing
+  sim.step(10);                // the single-step service still steps
+  EXPECT_NEAR(sim.time(), 10 * sim.timeStep(), 1e-15);
+  sim.resume();
+  sim.setPusherVelocity(0.1);
+  sim.advance(0.01);
+  EXPECT_NEAR(sim.pushedLength(), 10 * sim.timeStep() * 0.2 + 0.01 * 0.1, 1e-9);
+  sim.reset();
+  EXPECT_EQ(sim.time(), 0.0);
+  EXPECT_EQ(sim.pushedLength(), 0.0);
+  EXPECT_EQ(sim.pusherVelocity(), 0.2);
+}
+
+TEST(Simulation, UnstableTimeStepIsRefusedWithTheCriticalStep) {
+  Scenario s = loadScenario(kQuick, {"numerics.time_step=1e-4"});
+  try {
+    Simulation sim(s, BackendKind::kCpu);
+    FAIL() << "an unstable time step was accepted";
+  } catch (const ScenarioError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("numerics.time_step"), std::string::npos) << what;
+    EXPECT_NE(what.find("critical"), std::string::npos) << what;
+  }
+}
+
+TEST(Simulation, CudaBackendRequestFailsClearlyAndAutoFallsBack) {
+  EXPECT_THROW(Simulation(shortStrip(0), BackendKind::kCuda), std::runtime_error);
+  Simulation sim(shortStrip(0), BackendKind::kAuto);
+  EXPECT_EQ(sim.backendName(), "cpu");
+  EXPECT_NE(sim.backendNote().find("CPU"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace thin_ice
