@@ -98,3 +98,16 @@ TEST(Simulation, CudaBackendRequestFailsClearlyAndAutoFallsBack) {
 
 }  // namespace
 }  // namespace thin_ice
+
+namespace thin_ice {
+namespace {
+
+TEST(Simulation, EveryShippedScenarioBuildsWithAStableTimeStep) {
+  for (const char* name : {"W-1", "W-2", "W-3", "M-1", "M-2", "S-1", "S-2", "quick"}) {
+    const Scenario s = loadScenario(std::string(THIN_ICE_SOURCE_DIR) + "/config/scenarios/" + name + ".yaml");
+    EXPECT_NO_THROW(Simulation(s, BackendKind::kCpu)) << name;
+  }
+}
+
+}  // namespace
+}  // namespace thin_ice
