@@ -134,6 +134,8 @@ TEST(Contact, CollisionConservesMomentumAndGainsNoEnergy) {
   EXPECT_LE(energy(), e0 * (1.0 + 1e-6));
 }
 
+constexpr Vec2 kNoTurn = {1.0, 0.0};  // (cos 0, sin 0)
+
 BondRest unitBond() {
   // Two 0.2 m cells side by side along x sharing an edge of 0.2 m; centroids 0.2 m apart.
   BondRest b;
@@ -145,10 +147,11 @@ BondRest unitBond() {
   b.k_normal = 300e6 * 0.05 * 0.2 / 0.2;  // E h L_e / d
   b.k_shear = 0.4 * b.k_normal;
   b.k_vertical = 1e4;
+  b.damping_normal = b.damping_shear = b.damping_vertical = 0.0;
   return b;
 }
 
-BondConstants bondLaw(double coupling, bool bending) { return {0.05, 1.0, 1.0, 100e3, 130e3, coupling, bending, 0.0}; }
+BondConstants bondLaw(double coupling, bool bending) { return {0.05, 1.0, 1.0, 100e3, 130e3, coupling, bending}; }
 
 TEST(Bond, PulledApartItBreaksAtTheFlexuralStrength) {
   // sigma_h = k_n u / (h L_e) = sigma_f at u = sigma_f h L_e / k_n = 1e5 * 0.01 / 1.5e7 = 6.667e-5 m.
@@ -157,7 +160,7 @@ TEST(Bond, PulledApartItBreaksAtTheFlexuralStrength) {
   for (const double factor : {0.99, 1.01}) {
     const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
     const BodyState j = {{0.2 + factor * u_fail, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
-    const BondForce f = rmibBondForce(b, i, 0.0, j, 0.0, bondLaw(0.0, true));
+    const BondForce f = rmibBondForce(b, i, kNoTurn, j, kNoTurn, bondLaw(0.0, true));
     EXPECT_NEAR(f.sigma_h, factor * 100e3, 1e-6 * 100e3);
     EXPECT_NEAR(f.force_on_j.x, -b.k_normal * factor * u_fail, 1e-6);  // pulls j back
     EXPECT_EQ(f.breaks, factor > 1.0);
@@ -180,7 +183,7 @@ TEST(Bond, VerticalOffsetBreaksAtEquation13WithAndWithoutCompression) {
     const double dz = offsetFor(factor * 100e3);
     const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
     const BodyState j = {{0.2, 0.0}, dz, {0, 0}, 0.0, 0.0, 1.84};
-    EXPECT_EQ(rmibBondForce(b, i, 0.0, j, 0.0, bondLaw(0.5, true)).breaks, factor > 1.0);
+    EXPECT_EQ(rmibBondForce(b, i, kNoTurn, j, kNoTurn, bondLaw(0.5, true)).breaks, factor > 1.0);
   }
   // Compressed to sigma_c = 40 kPa with k = 0.5: threshold 100 - 20 = 80 kPa.
   const double squeeze = 40e3 * h * b.edge_length / b.k_normal;
@@ -189,10 +192,32 @@ TEST(Bond, VerticalOffsetBreaksAtEquation13WithAndWithoutCompression) {
     // K_n also falls with the offset: compress a little more so that sigma_c is 40 kPa.
     const double dz = offsetFor(factor * 80e3);
     const BodyState j = {{0.2 - squeeze / (1.0 - dz / h), 0.0}, dz, {0, 0}, 0.0, 0.0, 1.84};
-    const BondForce f = rmibBondForce(b, i, 0.0, j, 0.0, bondLaw(0.5, true));
+    const BondForce f = rmibBondForce(b, i, kNoTurn, j, kNoTurn, bondLaw(0.5, true));
     EXPECT_NEAR(f.sigma_c, 40e3, 1e-6 * 40e3);
     EXPECT_EQ(f.breaks, factor > 1.0) << "factor " << factor;
   }
+}
+
+TEST(Bond, RigidTurnOfThePairGivesNoForce) {
+  // Both cells turned by 0.3 rad about the bond's anchor point (the edge midpoint at x = 0.1):
+  // nothing is stretched, so the force is zero (objectivity of du, n and the shear part).
+  const BondRest b = unitBond();
+  const double a = 0.3;
+  const Vec2 turn = {std::cos(a), std::sin(a)};
+  const Vec2 anchor = {0.1, 0.0};
+  const Vec2 ci = anchor + rotate(Vec2{-0.1, 0.0}, turn.x, turn.y);
+  const Vec2 cj = anchor + rotate(Vec2{0.1, 0.0}, turn.x, turn.y);
+  const BodyState i = {ci, 0.0, {0, 0}, 0.0, 0.0, 1.84};
+  const BodyState j = {cj, 0.0, {0, 0}, 0.0, 0.0, 1.84};
+  const BondForce f = rmibBondForce(b, i, turn, j, turn, bondLaw(0.0, true));
+  EXPECT_NEAR(norm(f.force_on_j), 0.0, 1e-9);
+  // A relative turn of j alone by 0.01 rad about its centroid shears the bond: force along y.
+  const Vec2 small = {std::cos(0.01), std::sin(0.01)};
+  const BodyState j0 = {{0.2, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
+  const BodyState i0 = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
+  const BondForce g = rmibBondForce(b, i0, kNoTurn, j0, small, bondLaw(0.0, true));
+  // The anchor of j moves by -0.1 * (cos 0.01 - 1, sin 0.01) ~ (5e-6, -1e-3): shear pulls j up.
+  EXPECT_GT(g.force_on_j.y, 0.9 * b.k_shear * 0.1 * std::sin(0.01));
 }
 
 TEST(PlaneContact, VerticalPlaneVolumeByHand) {

@@ -28,6 +28,7 @@ struct ModelConstants {
   PlaneContactConstants wall;
   RigidPlane structure_face;       ///< the inclined face (outward normal towards the ice)
   double structure_top_z;          ///< [m] top of the face
+  double structure_toe_x;          ///< [m] origin of the structure frame (the toe on the waterline)
   double structure_y_min;          ///< [m] first panel's left edge
   double panel_width;              ///< [m]
   int panels;
@@ -43,7 +44,8 @@ struct ModelConstants {
   double rebuild_displacement;     ///< [m] rebuild when a cell moved farther since the last one
   double rebuild_rotation;         ///< [rad] ... or turned more
   int max_steps_between_rebuilds;  ///< N_iter
-  double search_radius;            ///< [m] centroid distance under which a pair is a candidate
+  double search_radius;            ///< [m] centroid distance under which a pair may be a candidate
+  double search_margin;            ///< [m] a pair is a candidate when |c_i - c_j| <= r_i + r_j + this
 };
 
 struct Model {

@@ -85,7 +85,7 @@ struct NumericsParams {
   double rebuild_displacement = 0.1;      ///< rebuild when a cell moved this x l-bar [-]
   double rebuild_rotation_deg = 2.0;      ///< ... or turned this much [deg] (delta_rot)
   double friction_regularisation = 1e-3;  ///< [m/s] slip speed below which friction is viscous
-  int threads = 0;                  ///< OpenMP threads on the CPU; 0 = all cores
+  int threads = 0;                  ///< OpenMP threads on the CPU; 0 = all cores from 2000 cells up, one below
 };
 
 struct Params {

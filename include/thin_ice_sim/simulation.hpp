@@ -17,6 +17,11 @@ enum class BackendKind { kCpu, kCuda, kAuto };
 /// Parses "cpu", "cuda" or "auto"; throws std::invalid_argument naming `key` otherwise.
 BackendKind parseBackendKind(const std::string& text, const std::string& key);
 
+/// A torque [N m].
+struct Torque3 {
+  double x = 0.0, y = 0.0, z = 0.0;
+};
+
 /// Loads on the structure at one instant (the output of the model, Eqs. 17-18).
 struct LoadSample {
   double time = 0.0;                   ///< [s] simulated time
@@ -28,6 +33,9 @@ struct LoadSample {
   std::vector<double> panel_horizontal;  ///< (panels) raw x-load per panel [N]
   std::vector<double> panel_vertical;    ///< (panels) raw z-load per panel [N]
   std::vector<double> panel_lateral;     ///< (panels) raw y-load per panel [N]
+  Torque3 torque;                        ///< raw, about the structure frame's origin (the toe on
+                                         ///< the waterline at y = 0) [N m]
+  std::vector<Torque3> panel_torque;     ///< (panels) raw, about each panel's centre on the waterline
   double pusher_force = 0.0;           ///< [N] force the pusher exerts on the ice, +x
   int intact_bonds = 0;
   int broken_bonds = 0;
@@ -79,8 +87,11 @@ class Simulation {
   LoadSample loads() const;
   /// Current cell states (downloads from the device when the backend is on the GPU).
   std::vector<CellSnapshot> cells() const;
-  /// World-frame polygon vertices of cell k at its current pose.
+  /// World-frame polygon vertices of cell k at its current pose (downloads all cells: to draw
+  /// many, take cells() once and use the overload below).
   std::vector<Vec2> cellPolygon(int k) const;
+  /// World-frame polygon vertices of cell k at the pose `pose` (an element of cells()).
+  std::vector<Vec2> cellPolygon(int k, const CellSnapshot& pose) const;
 
   int cellCount() const;
   const Params& params() const { return scenario_.params; }

@@ -23,6 +23,10 @@ namespace thin_ice {
 namespace {
 
 constexpr int kV = kMaxPolygonVertices;
+/// With threads = 0 (automatic), below this many cells the loops run on one thread: the fork-join of a parallel loop costs
+/// microseconds, more than a small scene's whole step (measured: a 20-cell strip ran 10x slower
+/// on two threads than on one).
+constexpr int kMinCellsForThreads = 2000;
 /// A cell faster than this has blown up [m/s] (the pusher moves at centimetres per second).
 constexpr double kRunawaySpeed = 50.0;
 
@@ -30,6 +34,7 @@ struct StructureContact {
   int first_panel;
   int panel_count;
   double fx[kMaxPanelsPerCell], fy[kMaxPanelsPerCell], fz[kMaxPanelsPerCell];  ///< on the structure [N]
+  double px[kMaxPanelsPerCell], py[kMaxPanelsPerCell], pz[kMaxPanelsPerCell];  ///< where it acts [m]
 };
 
 /// Index lists: for each cell, the entries (pair index, side) of the pairs it belongs to.
@@ -55,9 +60,13 @@ struct Incidence {
 
 class CpuBackend final : public Backend {
  public:
-  CpuBackend(const Model& model, int threads) : model_(model), threads_(threads > 0 ? threads : omp_get_max_threads()) {
+  CpuBackend(const Model& model, int threads)
+      : model_(model),
+        threads_(threads > 0 ? threads : omp_get_max_threads()),
+        parallel_(threads_ > 1 && (threads > 0 || model.cell_count >= kMinCellsForThreads)) {
     const int n = model_.cell_count;
     world_.resize(static_cast<size_t>(n) * kV);
+    turn_.resize(n);
     box_.resize(static_cast<size_t>(n) * 4);
     structure_.resize(n);
     pusher_fx_.resize(n);
@@ -86,9 +95,10 @@ class CpuBackend final : public Backend {
     sum.panel_horizontal.assign(c.panels, 0.0);
     sum.panel_vertical.assign(c.panels, 0.0);
     sum.panel_lateral.assign(c.panels, 0.0);
+    sum.panel_torque.assign(c.panels, Torque3{});
     long taken = 0;
     for (long s = 0; s < steps && health_error_.empty(); ++s) {
-      if (rebuild_requested_ || needsRebuild()) rebuildContacts();
+      if (rebuild_requested_) rebuildContacts();
       stepOnce(pusher_velocity, sum);
       ++taken;
     }
@@ -98,7 +108,9 @@ class CpuBackend final : public Backend {
       sum.vertical_raw *= inv;
       sum.lateral_raw *= inv;
       sum.pusher_force *= inv;
+      sum.torque.x *= inv; sum.torque.y *= inv; sum.torque.z *= inv;
       for (int p = 0; p < c.panels; ++p) {
+        sum.panel_torque[p].x *= inv; sum.panel_torque[p].y *= inv; sum.panel_torque[p].z *= inv;
         sum.panel_horizontal[p] *= inv;
         sum.panel_vertical[p] *= inv;
         sum.panel_lateral[p] *= inv;
@@ -138,21 +150,6 @@ class CpuBackend final : public Backend {
     return {{m.x, m.y}, m.z, {m.vx, m.vy}, m.vz, m.wz, model_.mass[k]};
   }
 
-  bool needsRebuild() const {
-    const ModelConstants& c = model_.constants;
-    if (steps_since_rebuild_ >= c.max_steps_between_rebuilds) return true;
-    const int n = model_.cell_count;
-    const double limit2 = c.rebuild_displacement * c.rebuild_displacement;
-    bool exceeded = false;
-#pragma omp parallel for num_threads(threads_) schedule(static) reduction(|| : exceeded)
-    for (int k = 0; k < n; ++k) {
-      const double dx = motion_[k].x - reference_[k].x, dy = motion_[k].y - reference_[k].y;
-      exceeded = exceeded || dx * dx + dy * dy > limit2 ||
-                 std::fabs(motion_[k].yaw - reference_[k].yaw) > c.rebuild_rotation;
-    }
-    return exceeded;
-  }
-
   /// Candidate pairs within the search radius that are not held by an intact bond.
   void rebuildContacts() {
     const int n = model_.cell_count;
@@ -161,7 +158,12 @@ class CpuBackend final : public Backend {
     const std::vector<CandidatePair>& candidates = search_.findPairs(centres, model_.constants.search_radius);
     contact_i_.clear();
     contact_j_.clear();
+    const double margin = model_.constants.search_margin;
     for (const CandidatePair& p : candidates) {
+      // Bounding circles (radius r + margin) that miss cannot touch before the next rebuild.
+      const double reach = model_.radius[p.i] + model_.radius[p.j] + margin;
+      const double dx = centres[p.j].x - centres[p.i].x, dy = centres[p.j].y - centres[p.i].y;
+      if (dx * dx + dy * dy > reach * reach) continue;
       if (hasIntactBond(p.i, p.j)) continue;
       contact_i_.push_back(p.i);
       contact_j_.push_back(p.j);
@@ -183,10 +185,11 @@ class CpuBackend final : public Backend {
 
   void updateWorldPolygons() {
     const int n = model_.cell_count;
-#pragma omp parallel for num_threads(threads_) schedule(static)
+#pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_)
     for (int k = 0; k < n; ++k) {
       const CellMotion& m = motion_[k];
       const double cs = std::cos(m.yaw), sn = std::sin(m.yaw);
+      turn_[k] = {cs, sn};
       double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
       for (int v = 0; v < model_.vertex_count[k]; ++v) {
         const Vec2 offset = {model_.vertex_x[k * kV + v], model_.vertex_y[k * kV + v]};
@@ -202,11 +205,11 @@ class CpuBackend final : public Backend {
   void computeBondForces() {
     const int bonds = static_cast<int>(model_.bond_rest.size());
     int newly_broken = 0;
-#pragma omp parallel for num_threads(threads_) schedule(static) reduction(+ : newly_broken)
+#pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_) reduction(+ : newly_broken)
     for (int b = 0; b < bonds; ++b) {
       if (bond_broken_[b]) continue;
       const int i = model_.bond_i[b], j = model_.bond_j[b];
-      bond_force_[b] = rmibBondForce(model_.bond_rest[b], body(i), motion_[i].yaw, body(j), motion_[j].yaw,
+      bond_force_[b] = rmibBondForce(model_.bond_rest[b], body(i), turn_[i], body(j), turn_[j],
                                      model_.constants.bond);
       if (bond_force_[b].breaks) {
         bond_broken_[b] = 1;  // for good; its force of this step still acts
@@ -216,13 +219,16 @@ class CpuBackend final : public Backend {
     if (newly_broken > 0) {
       broken_count_ += newly_broken;
       rebuild_requested_ = true;  // the pair now needs a DEM contact
+      for (int b = 0; b < bonds; ++b) {
+        if (bond_force_[b].breaks && bond_broken_[b]) just_broken_.push_back(b);
+      }
     }
   }
 
   void computeContactForces() {
     const int pairs = static_cast<int>(contact_i_.size());
     int touching = 0;
-#pragma omp parallel for num_threads(threads_) schedule(static) reduction(+ : touching)
+#pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_) reduction(+ : touching)
     for (int p = 0; p < pairs; ++p) {
       const int i = contact_i_[p], j = contact_j_[p];
       PairForce& f = contact_force_[p];
@@ -306,6 +312,7 @@ class CpuBackend final : public Backend {
           const PlaneContactForce f = apply(pen, face, c.structure, 0.0);
           const int slot = s.panel_count++;
           s.fx[slot] = -f.fx; s.fy[slot] = -f.fy; s.fz[slot] = -f.fz;
+          s.px[slot] = pen.centroid.x; s.py[slot] = pen.centroid.y; s.pz[slot] = pen.z;
         }
       }
     }
@@ -318,8 +325,9 @@ class CpuBackend final : public Backend {
     updateWorldPolygons();
     computeBondForces();
     computeContactForces();
-    bool blown = false;
-#pragma omp parallel for num_threads(threads_) schedule(static) reduction(|| : blown)
+    bool blown = false, moved_far = false;
+    const double limit2 = c.rebuild_displacement * c.rebuild_displacement;
+#pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_) reduction(|| : blown, moved_far)
     for (int k = 0; k < n; ++k) {
       const CellMotion& m = motion_[k];
       const Vec2 centre = {m.x, m.y};
@@ -350,11 +358,15 @@ class CpuBackend final : public Backend {
       const CellMotion& after = motion_[k];
       const double speed2 = after.vx * after.vx + after.vy * after.vy + after.vz * after.vz;
       blown = blown || !std::isfinite(after.x + after.y + after.z + after.yaw) || !(speed2 < kRunawaySpeed * kRunawaySpeed);
+      // Algorithm 1, lines 14-16: moved or turned too far since the last rebuild?
+      const double dx = after.x - reference_[k].x, dy = after.y - reference_[k].y;
+      moved_far = moved_far || dx * dx + dy * dy > limit2 ||
+                  std::fabs(after.yaw - reference_[k].yaw) > c.rebuild_rotation;
     }
-    // Broken bonds whose last force has now acted stop here.
-    for (size_t b = 0; b < bond_force_.size(); ++b) {
-      if (bond_broken_[b]) bond_force_[b].breaks = false;
-    }
+    if (moved_far || steps_since_rebuild_ + 1 >= c.max_steps_between_rebuilds) rebuild_requested_ = true;
+    // Bonds broken in this step have applied their last force: they stop here.
+    for (int b : just_broken_) bond_force_[b].breaks = false;
+    just_broken_.clear();
     // Loads, summed in cell order (deterministic).
     for (int k = 0; k < n; ++k) {
       sum.pusher_force += pusher_fx_[k];
@@ -367,6 +379,15 @@ class CpuBackend final : public Backend {
         sum.horizontal_raw += s.fx[slot];
         sum.lateral_raw += s.fy[slot];
         sum.vertical_raw += s.fz[slot];
+        // Moments r x F about the structure origin (toe, 0, 0) and about the panel's centre.
+        const double rx = s.px[slot] - c.structure_toe_x, ry = s.py[slot], rz = s.pz[slot];
+        const double ry_panel = ry - (c.structure_y_min + (p + 0.5) * c.panel_width);
+        sum.torque.x += ry * s.fz[slot] - rz * s.fy[slot];
+        sum.torque.y += rz * s.fx[slot] - rx * s.fz[slot];
+        sum.torque.z += rx * s.fy[slot] - ry * s.fx[slot];
+        sum.panel_torque[p].x += ry_panel * s.fz[slot] - rz * s.fy[slot];
+        sum.panel_torque[p].y += rz * s.fx[slot] - rx * s.fz[slot];
+        sum.panel_torque[p].z += rx * s.fy[slot] - ry_panel * s.fx[slot];
       }
     }
     pusher_x_ += pusher_velocity * dt;
@@ -383,8 +404,11 @@ class CpuBackend final : public Backend {
 
   const Model& model_;
   const int threads_;
+  const bool parallel_;  ///< run the loops on threads_ threads (false: one thread)
   std::vector<CellMotion> motion_, reference_;
   std::vector<Vec2> world_;               ///< (cells x kV) world vertices [m]
+  std::vector<Vec2> turn_;                ///< (cells) (cos yaw, sin yaw)
+  std::vector<int> just_broken_;          ///< bonds broken in the current step
   std::vector<double> box_;               ///< (cells x 4) x0 x1 y0 y1 [m]
   std::vector<StructureContact> structure_;
   std::vector<double> pusher_fx_;         ///< (cells) [N]

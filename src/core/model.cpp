@@ -30,8 +30,7 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
             ice.flexural_strength,
             ice.compressive_strength,
             ice.compression_coupling,
-            ice.vertical_stress == VerticalStressModel::kBending,
-            ice.bond_damping_ratio};
+            ice.vertical_stress == VerticalStressModel::kBending};
   c.water = {p.water.density,       p.water.gravity,        h, p.water.linear_drag,
              p.water.quadratic_drag, p.water.vertical_linear_drag, p.water.vertical_quadratic_drag};
   c.structure = {p.structure.stiffness, h, p.structure.friction, ice.contact_damping_ratio, regularisation};
@@ -44,6 +43,7 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
   const double angle = p.structure.angle_deg * kPi / 180.0;
   c.structure_face = {-std::sin(angle), 0.0, std::cos(angle), -std::sin(angle) * p.structure.toe_x};
   c.structure_top_z = p.structure.height;
+  c.structure_toe_x = p.structure.toe_x;
   c.structure_y_min = -0.5 * p.structure.width;
   c.panels = p.structure.panels;
   c.panel_width = p.structure.width / p.structure.panels;
@@ -124,6 +124,11 @@ Model buildModel(const Params& params, const IceSheet& sheet, const std::string&
     b.k_normal = ice.youngs_modulus * bar;
     b.k_shear = shear_modulus * bar;
     b.k_vertical = vertical_shear_modulus * bar;
+    const double reduced_mass = m.mass[e.i] * m.mass[e.j] / (m.mass[e.i] + m.mass[e.j]);
+    const double two_zeta = 2.0 * ice.bond_damping_ratio;
+    b.damping_normal = two_zeta * std::sqrt(b.k_normal * reduced_mass);
+    b.damping_shear = two_zeta * std::sqrt(b.k_shear * reduced_mass);
+    b.damping_vertical = two_zeta * std::sqrt(b.k_vertical * reduced_mass);
     m.bond_i.push_back(e.i);
     m.bond_j.push_back(e.j);
     m.bond_rest.push_back(b);
@@ -135,6 +140,7 @@ Model buildModel(const Params& params, const IceSheet& sheet, const std::string&
   const ModelConstants& c = m.constants;
   const double margin = 2.0 * (c.rebuild_displacement + largest_radius * c.rebuild_rotation);
   m.constants.search_radius = 2.0 * largest_radius + margin;
+  m.constants.search_margin = margin;
 
   if (2.0 * largest_radius >= (kMaxPanelsPerCell - 1) * c.panel_width) {
     std::ostringstream msg;

@@ -68,9 +68,13 @@ int Simulation::cellCount() const { return model_->cell_count; }
 std::string Simulation::backendName() const { return backend_->name(); }
 
 std::vector<Vec2> Simulation::cellPolygon(int k) const {
+  if (k < 0 || k >= model_->cell_count) return {};
+  return cellPolygon(k, backend_->cells()[k]);
+}
+
+std::vector<Vec2> Simulation::cellPolygon(int k, const CellSnapshot& c) const {
   std::vector<Vec2> polygon;
   if (k < 0 || k >= model_->cell_count) return polygon;
-  const CellSnapshot c = backend_->cells()[k];
   const double cs = std::cos(c.yaw), sn = std::sin(c.yaw);
   for (int v = 0; v < model_->vertex_count[k]; ++v) {
     const Vec2 offset = {model_->vertex_x[k * kMaxPolygonVertices + v], model_->vertex_y[k * kMaxPolygonVertices + v]};

@@ -4,7 +4,8 @@
 //                [--backend cpu|cuda|auto] [--output-interval S] [--snapshots N] --out DIR
 // Writes DIR/loads.csv (one row per output interval, through loads.csv.partial), DIR/summary.json
 // and with --snapshots DIR/snapshots/cells_RRRRRR.csv (RRRRRR: loads.csv data row, 1-based; 000000:
-// the sheet at rest) listed in snapshots/index.csv.
+// the sheet at rest) listed in snapshots/index.csv; with --profiles DIR/profiles.csv (the rubble
+// pile's side and top profiles at the end).
 // Exit status: 0 done; 1 I/O or backend failure; 2 bad arguments or scenario (nothing written);
 // 3 the simulation became unhealthy (rows up to then and the summary are kept).
 #include <unistd.h>
@@ -26,6 +27,7 @@
 #include <vector>
 
 #include "thin_ice_sim/load_statistics.hpp"
+#include "thin_ice_sim/rubble_profiles.hpp"
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/sheet_io.hpp"
 #include "thin_ice_sim/simulation.hpp"
@@ -39,7 +41,8 @@ using Clock = std::chrono::steady_clock;
 const char* kUsage =
     "usage: thin_ice_run --scenario FILE [--set section.key=value]... "
     "(--until-length L | --until-time T)\n"
-    "                    [--backend cpu|cuda|auto] [--output-interval S] [--snapshots N] --out DIR\n";
+    "                    [--backend cpu|cuda|auto] [--output-interval S] [--snapshots N] [--profiles]\n"
+    "                    --out DIR\n";
 
 struct UsageError : std::runtime_error {  // bad command line: exit status 2 with the usage
   using std::runtime_error::runtime_error;
@@ -53,6 +56,7 @@ struct Options {
   thin_ice::BackendKind backend = thin_ice::BackendKind::kAuto;
   double output_interval = 0.01;       // [s] simulated time between rows of loads.csv
   int snapshots = 0;                   // cell snapshots, evenly spaced in progress
+  bool profiles = false;               // write the rubble pile's side and top profiles at the end
   bool help = false;
 };
 
@@ -81,11 +85,15 @@ Options parseOptions(int argc, char** argv) {
       o.help = true;
       return o;
     }
+    if (flag == "--profiles") {
+      o.profiles = true;
+      continue;
+    }
     static const std::set<std::string> kFlags = {"--scenario", "--set", "--until-length",
         "--until-time", "--backend", "--out", "--output-interval", "--snapshots"};
     if (!kFlags.count(flag)) {
       throw UsageError("unknown argument '" + flag + "'; allowed: --scenario --set --until-length "
-                       "--until-time --backend --output-interval --snapshots --out");
+                       "--until-time --backend --output-interval --snapshots --profiles --out");
     }
     if (k + 1 >= argc) throw UsageError(flag + " needs a value");
     const std::string value = argv[++k];
@@ -191,7 +199,7 @@ void writeSnapshot(const Simulation& sim, const std::string& dir, long row) {
     const thin_ice::CellSnapshot& c = cells[k];
     text << k << ',' << c.x << ',' << c.y << ',' << c.z << ',' << c.yaw << ','
          << (c.in_intact_sheet ? 1 : 0) << ',';
-    const std::vector<thin_ice::Vec2> polygon = sim.cellPolygon(static_cast<int>(k));
+    const std::vector<thin_ice::Vec2> polygon = sim.cellPolygon(static_cast<int>(k), c);
     for (std::size_t v = 0; v < polygon.size(); ++v) text << (v ? " " : "") << polygon[v].x << ' ' << polygon[v].y;
     text << '\n';
   }
@@ -313,6 +321,18 @@ RunResult runSimulation(Simulation& sim, const Options& o) {
   return r;
 }
 
+/// The rubble pile's side profile (height against x, 0.1 m bins from 4 m in front of the toe) and
+/// top profile (distance from the toe against y), as the paper's Figs. 13 and 15.
+void writeProfiles(const Simulation& sim, const std::string& path) {
+  constexpr double kBin = 0.1, kReach = 4.0;  // [m]
+  const thin_ice::RubbleProfiles p = thin_ice::computeRubbleProfiles(sim.cells(), sim.params(), kBin, kReach);
+  std::ostringstream out;
+  out << "profile,coordinate_m,value_m\n";
+  for (std::size_t k = 0; k < p.side_x.size(); ++k) out << "side," << p.side_x[k] << "," << p.side_height[k] << "\n";
+  for (std::size_t k = 0; k < p.top_y.size(); ++k) out << "top," << p.top_y[k] << "," << p.top_extent[k] << "\n";
+  thin_ice::writeFileAtomically(path, out.str());
+}
+
 std::string summaryJson(const Simulation& sim, const Options& o, const RunResult& r,
                         const thin_ice::LoadStatistics& s, double setup_wall) {
   const thin_ice::Scenario& sc = sim.scenario();
@@ -410,6 +430,7 @@ int main(int argc, char** argv) {
     const auto stats = thin_ice::analyseLoadHistory(result.length, result.load);
     thin_ice::writeFileAtomically(options.out + "/summary.json",
                                   summaryJson(*sim, options, result, stats, setup_wall));
+    if (options.profiles) writeProfiles(*sim, options.out + "/profiles.csv");
     printReport(*sim, options, stats);
     return result.error.empty() ? 0 : 3;
   } catch (const std::exception& e) {

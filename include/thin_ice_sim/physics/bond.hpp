@@ -31,6 +31,11 @@ struct BondRest {
   double k_normal;      ///< k_n [N/m]
   double k_shear;       ///< k_s [N/m]
   double k_vertical;    ///< k_v [N/m]
+  // Damping coefficients 2 zeta sqrt(k m_red) of the three springs at K = 1 [N s/m], precomputed
+  // (m_red = m_i m_j / (m_i + m_j)); the smoothing factor K scales them by sqrt(K).
+  double damping_normal;
+  double damping_shear;
+  double damping_vertical;
 };
 
 struct BondConstants {
@@ -41,7 +46,6 @@ struct BondConstants {
   double compressive_strength;  ///< sigma_comp [Pa]
   double compression_coupling;  ///< k of Eq. (13) [-]
   bool bending_stress;          ///< sigma_v from the clamped-beam moment (true) or F_v/(h L_e)
-  double damping_ratio;         ///< zeta [-]
 };
 
 struct BondForce {
@@ -69,13 +73,17 @@ TIS_HD bool bondFails(double sigma_h, double sigma_v, double sigma_c, const Bond
          sigma_c > c.compressive_strength;
 }
 
-TIS_HD BondForce rmibBondForce(const BondRest& b, const BodyState& i, double yaw_i, const BodyState& j,
-                               double yaw_j, const BondConstants& c) {
+/// Force of bond b between cells i and j; turn_i = (cos yaw_i, sin yaw_i), likewise turn_j
+/// (computed once per cell and step by the caller).
+TIS_HD BondForce rmibBondForce(const BondRest& b, const BodyState& i, Vec2 turn_i, const BodyState& j,
+                               Vec2 turn_j, const BondConstants& c) {
   BondForce f;
-  f.arm_i = rotate(b.anchor_i, cos(yaw_i), sin(yaw_i));
-  f.arm_j = rotate(b.anchor_j, cos(yaw_j), sin(yaw_j));
-  const double mean_yaw = 0.5 * (yaw_i + yaw_j);
-  const Vec2 n = rotate(b.normal, cos(mean_yaw), sin(mean_yaw));
+  f.arm_i = rotate(b.anchor_i, turn_i.x, turn_i.y);
+  f.arm_j = rotate(b.anchor_j, turn_j.x, turn_j.y);
+  // The rest normal turned by the mean yaw: the bisector of its two turned copies (exact for
+  // |yaw_i - yaw_j| < pi, and one square root instead of a sine and a cosine).
+  const Vec2 sum = rotate(b.normal, turn_i.x, turn_i.y) + rotate(b.normal, turn_j.x, turn_j.y);
+  const Vec2 n = (1.0 / norm(sum)) * sum;
 
   const Vec2 du = (j.centroid + f.arm_j) - (i.centroid + f.arm_i);            // Eq. (8)
   const double dz = j.z - i.z;
@@ -90,14 +98,12 @@ TIS_HD BondForce rmibBondForce(const BondRest& b, const BodyState& i, double yaw
   const double elastic_v = k_v * b.k_vertical * dz;
 
   // Damping on the anchor velocities.
-  const double reduced_mass = i.mass * j.mass / (i.mass + j.mass);
   const Vec2 w = (j.velocity + j.wz * perpendicular(f.arm_j)) - (i.velocity + i.wz * perpendicular(f.arm_i));
   const double w_n = dot(w, n);
   const Vec2 w_s = w - w_n * n;
-  const double two_zeta = 2.0 * c.damping_ratio;
-  const double damping_h = two_zeta * sqrt(k_h * b.k_normal * reduced_mass) * w_n;
-  const Vec2 damping_s = (two_zeta * sqrt(b.k_shear * reduced_mass)) * w_s;
-  const double damping_v = two_zeta * sqrt(k_v * b.k_vertical * reduced_mass) * (j.vz - i.vz);
+  const double damping_h = (k_h == 1.0 ? 1.0 : sqrt(k_h)) * b.damping_normal * w_n;
+  const Vec2 damping_s = b.damping_shear * w_s;
+  const double damping_v = (k_v == 1.0 ? 1.0 : sqrt(k_v)) * b.damping_vertical * (j.vz - i.vz);
 
   // The bond pulls j back towards i: force on j opposes the displacement.
   f.force_on_j = -((elastic_h + damping_h) * n + elastic_s + damping_s);

@@ -1,0 +1,127 @@
+#include "scene_markers.hpp"
+
+#include <geometry_msgs/Point.h>
+#include <std_msgs/ColorRGBA.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace thin_ice {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+constexpr double kRedAbove = 0.3;  ///< [m] top height above the waterline drawn fully red
+
+geometry_msgs::Point point(double x, double y, double z) {
+  geometry_msgs::Point p;
+  p.x = x;
+  p.y = y;
+  p.z = z;
+  return p;
+}
+
+std_msgs::ColorRGBA colour(double r, double g, double b, double a = 1.0) {
+  std_msgs::ColorRGBA c;
+  c.r = static_cast<float>(r);
+  c.g = static_cast<float>(g);
+  c.b = static_cast<float>(b);
+  c.a = static_cast<float>(a);
+  return c;
+}
+
+visualization_msgs::Marker baseMarker(const std::string& frame, const ros::Time& stamp, const std::string& ns,
+                                      int type) {
+  visualization_msgs::Marker m;
+  m.header.frame_id = frame;
+  m.header.stamp = stamp;
+  m.ns = ns;
+  m.id = 0;
+  m.type = type;
+  m.action = visualization_msgs::Marker::ADD;
+  m.pose.orientation.w = 1.0;
+  m.scale.x = m.scale.y = m.scale.z = 1.0;
+  m.color = colour(1, 1, 1);
+  return m;
+}
+
+/// Two triangles of the quadrilateral a-b-c-d.
+void addQuad(visualization_msgs::Marker& m, const geometry_msgs::Point& a, const geometry_msgs::Point& b,
+             const geometry_msgs::Point& c, const geometry_msgs::Point& d) {
+  m.points.insert(m.points.end(), {a, b, c, a, c, d});
+}
+
+}  // namespace
+
+visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const std::string& frame,
+                                                 const ros::Time& stamp) {
+  const Params& p = sim.params();
+  const double half_h = 0.5 * p.ice.thickness;
+  visualization_msgs::MarkerArray array;
+
+  visualization_msgs::Marker cells = baseMarker(frame, stamp, "cells", visualization_msgs::Marker::TRIANGLE_LIST);
+  visualization_msgs::Marker outlines = baseMarker(frame, stamp, "outlines", visualization_msgs::Marker::LINE_LIST);
+  outlines.scale.x = 0.008;  // [m] line width
+  outlines.color = colour(0.15, 0.25, 0.35);
+  const std::vector<CellSnapshot> states = sim.cells();
+  for (int k = 0; k < sim.cellCount(); ++k) {
+    const CellSnapshot& c = states[k];
+    const std::vector<Vec2> polygon = sim.cellPolygon(k, c);
+    const double top = c.z + half_h;
+    std_msgs::ColorRGBA fill = colour(0.86, 0.92, 0.97);
+    if (!c.in_intact_sheet) {
+      const double t = std::clamp(top / kRedAbove, 0.0, 1.0);
+      fill = colour(0.25 + 0.75 * t, 0.55 - 0.2 * t, 0.9 - 0.7 * t);
+    }
+    for (size_t v = 1; v + 1 < polygon.size(); ++v) {
+      cells.points.push_back(point(polygon[0].x, polygon[0].y, top));
+      cells.points.push_back(point(polygon[v].x, polygon[v].y, top));
+      cells.points.push_back(point(polygon[v + 1].x, polygon[v + 1].y, top));
+      cells.colors.insert(cells.colors.end(), {fill, fill, fill});
+    }
+    for (size_t v = 0; v < polygon.size(); ++v) {
+      const Vec2 a = polygon[v], b = polygon[(v + 1) % polygon.size()];
+      outlines.points.push_back(point(a.x, a.y, top + 0.001));
+      outlines.points.push_back(point(b.x, b.y, top + 0.001));
+    }
+  }
+  array.markers.push_back(cells);
+  array.markers.push_back(outlines);
+
+  // The structure: the inclined face from the bottom to its top, and the side panels.
+  const StructureParams& s = p.structure;
+  const double cot = 1.0 / std::tan(s.angle_deg * kPi / 180.0);
+  const double z_low = -p.bottom.depth, z_high = s.height;
+  const double x_low = s.toe_x + z_low * cot, x_high = s.toe_x + z_high * cot;
+  const double y0 = -0.5 * s.width, y1 = 0.5 * s.width;
+  visualization_msgs::Marker structure = baseMarker(frame, stamp, "structure", visualization_msgs::Marker::TRIANGLE_LIST);
+  structure.color = colour(0.55, 0.55, 0.6);
+  addQuad(structure, point(x_low, y0, z_low), point(x_low, y1, z_low), point(x_high, y1, z_high), point(x_high, y0, z_high));
+  for (const double y : {y0, y1}) {
+    addQuad(structure, point(s.toe_x - s.side_panel_length, y, z_low), point(x_high, y, z_low),
+            point(x_high, y, z_high), point(s.toe_x - s.side_panel_length, y, z_high));
+  }
+  array.markers.push_back(structure);
+
+  const double lane = p.channel.enabled ? p.channel.width : p.sheet.width;
+  visualization_msgs::Marker pusher = baseMarker(frame, stamp, "pusher", visualization_msgs::Marker::CUBE);
+  pusher.pose.position = point(sim.pusherPosition() - 0.02, 0.0, 0.0);
+  pusher.scale.x = 0.04;
+  pusher.scale.y = lane;
+  pusher.scale.z = 0.4;
+  pusher.color = colour(0.9, 0.6, 0.1);
+  array.markers.push_back(pusher);
+
+  if (p.bottom.enabled) {
+    const double x_start = s.toe_x - p.bottom.distance_from_structure;
+    visualization_msgs::Marker bottom = baseMarker(frame, stamp, "bottom", visualization_msgs::Marker::CUBE);
+    bottom.pose.position = point(0.5 * (x_start + x_high), 0.0, z_low - 0.01);
+    bottom.scale.x = x_high - x_start;
+    bottom.scale.y = s.width;
+    bottom.scale.z = 0.02;
+    bottom.color = colour(0.45, 0.35, 0.25, 0.8);
+    array.markers.push_back(bottom);
+  }
+  return array;
+}
+
+}  // namespace thin_ice

@@ -1,0 +1,20 @@
+// rviz markers of the scene: the cells (filled polygons with outlines, coloured by state), the
+// inclined structure with its side panels, the pusher plate and the false bottom.
+#pragma once
+
+#include <ros/time.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <string>
+
+#include "thin_ice_sim/simulation.hpp"
+
+namespace thin_ice {
+
+/// Marker namespaces: "cells" (triangle list), "outlines" (line list), "structure", "pusher",
+/// "bottom". Cells are drawn at their top surface; intact sheet light grey-blue, broken pieces
+/// coloured by the height of their top above the waterline (blue at 0, red at 0.3 m and above).
+visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const std::string& frame,
+                                                 const ros::Time& stamp);
+
+}  // namespace thin_ice

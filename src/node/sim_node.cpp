@@ -1,0 +1,343 @@
+#include "sim_node.hpp"
+
+#include <geometry_msgs/TransformStamped.h>
+#include <geometry_msgs/WrenchStamped.h>
+#include <rosgraph_msgs/Clock.h>
+#include <visualization_msgs/MarkerArray.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+#include "scene_markers.hpp"
+#include "thin_ice_sim/PanelLoads.h"
+#include "thin_ice_sim/SimStatus.h"
+#include "thin_ice_sim/scenario.hpp"
+
+namespace thin_ice {
+namespace {
+
+/// Where bare scenario names are looked up (the package's config/scenarios, set by CMake).
+const std::string kScenarioDir = THIN_ICE_SCENARIO_DIR;
+
+std::string resolveScenario(const std::string& name) {
+  if (name.find('/') != std::string::npos || name.size() > 5 && name.substr(name.size() - 5) == ".yaml") {
+    return name;
+  }
+  return kScenarioDir + "/" + name + ".yaml";
+}
+
+void requirePositive(const std::string& name, double value, bool allow_zero) {
+  if (!std::isfinite(value) || value < 0.0 || (!allow_zero && value == 0.0)) {
+    std::ostringstream msg;
+    msg << "parameter ~" << name << " = " << value << " is invalid; allowed: " << (allow_zero ? ">= 0" : "> 0");
+    throw std::invalid_argument(msg.str());
+  }
+}
+
+geometry_msgs::Vector3 vector3(double x, double y, double z) {
+  geometry_msgs::Vector3 v;
+  v.x = x;
+  v.y = y;
+  v.z = z;
+  return v;
+}
+
+}  // namespace
+
+NodeSettings readNodeSettings(const ros::NodeHandle& pnh) {
+  NodeSettings s;
+  if (!pnh.getParam("scenario", s.scenario) || s.scenario.empty()) {
+    throw std::invalid_argument("parameter ~scenario is required: a name in " + kScenarioDir + " or a path");
+  }
+  s.scenario = resolveScenario(s.scenario);
+  // ~set: a list of "section.key=value" strings, or one string of them separated by spaces.
+  XmlRpc::XmlRpcValue set;
+  if (pnh.getParam("set", set)) {
+    if (set.getType() == XmlRpc::XmlRpcValue::TypeArray) {
+      for (int k = 0; k < set.size(); ++k) s.overrides.push_back(static_cast<std::string>(set[k]));
+    } else if (set.getType() == XmlRpc::XmlRpcValue::TypeString) {
+      std::istringstream words(static_cast<std::string>(set));
+      for (std::string w; words >> w;) s.overrides.push_back(w);
+    } else {
+      throw std::invalid_argument("parameter ~set must be a list of 'section.key=value' strings or one such string");
+    }
+  }
+  pnh.param("backend", s.backend, s.backend);
+  pnh.param("real_time_factor", s.real_time_factor, s.real_time_factor);
+  pnh.param("load_rate", s.load_rate, s.load_rate);
+  pnh.param("marker_rate", s.marker_rate, s.marker_rate);
+  pnh.param("status_rate", s.status_rate, s.status_rate);
+  pnh.param("publish_clock", s.publish_clock, s.publish_clock);
+  pnh.param("cmd_timeout", s.cmd_timeout, s.cmd_timeout);
+  pnh.param("max_pusher_speed", s.max_pusher_speed, s.max_pusher_speed);
+  pnh.param("paused", s.start_paused, s.start_paused);
+  pnh.param("world_frame", s.world_frame, s.world_frame);
+  pnh.param("structure_frame", s.structure_frame, s.structure_frame);
+  pnh.param("pusher_frame", s.pusher_frame, s.pusher_frame);
+  requirePositive("real_time_factor", s.real_time_factor, true);
+  requirePositive("load_rate", s.load_rate, false);
+  requirePositive("marker_rate", s.marker_rate, false);
+  requirePositive("status_rate", s.status_rate, false);
+  requirePositive("cmd_timeout", s.cmd_timeout, true);
+  requirePositive("max_pusher_speed", s.max_pusher_speed, false);
+  parseBackendKind(s.backend, "parameter ~backend");
+  return s;
+}
+
+SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
+    : nh_(nh), private_nh_(private_nh), settings_(readNodeSettings(private_nh_)) {
+  const Scenario scenario = loadScenario(settings_.scenario, settings_.overrides);
+  sim_ = std::make_unique<Simulation>(scenario, parseBackendKind(settings_.backend, "~backend"));
+  ROS_INFO("thin_ice_sim: scenario %s (%d cells, dt %.3g s, critical %.3g s), %s", settings_.scenario.c_str(),
+           sim_->cellCount(), sim_->timeStep(), sim_->criticalTimeStep(), sim_->backendNote().c_str());
+  if (settings_.start_paused) sim_->pause();
+  applied_velocity_ = sim_->pusherVelocity();
+
+  wrench_pub_ = nh_.advertise<geometry_msgs::WrenchStamped>("structure/wrench", 50);
+  panels_pub_ = nh_.advertise<thin_ice_sim::PanelLoads>("structure/panel_loads", 50);
+  markers_pub_ = nh_.advertise<visualization_msgs::MarkerArray>("ice/cells", 2);
+  status_pub_ = nh_.advertise<thin_ice_sim::SimStatus>("sim/status", 10);
+  if (settings_.publish_clock) clock_pub_ = nh_.advertise<rosgraph_msgs::Clock>("/clock", 50);
+  command_sub_ = nh_.subscribe("pusher/cmd_vel", 10, &SimNode::onCommand, this);
+  pause_srv_ = nh_.advertiseService("sim/pause", &SimNode::onPause, this);
+  unpause_srv_ = nh_.advertiseService("sim/unpause", &SimNode::onUnpause, this);
+  reset_srv_ = nh_.advertiseService("sim/reset", &SimNode::onReset, this);
+  step_srv_ = nh_.advertiseService("sim/step", &SimNode::onStep, this);
+  publishStructureTransform();
+}
+
+void SimNode::onCommand(const geometry_msgs::Twist& command) {
+  const double v = command.linear.x;
+  if (!std::isfinite(v)) {
+    ROS_WARN_THROTTLE(1.0, "thin_ice_sim: dropped a pusher command with a non-finite linear.x");
+    return;
+  }
+  double accepted = v;
+  if (std::fabs(v) > settings_.max_pusher_speed) {
+    accepted = std::copysign(settings_.max_pusher_speed, v);
+    ROS_WARN_THROTTLE(1.0, "thin_ice_sim: pusher command %.4g m/s clamped to %.4g m/s (~max_pusher_speed)", v,
+                      accepted);
+  }
+  command_velocity_ = accepted;
+  command_time_ = ros::WallTime::now();
+  have_command_ = true;
+  command_expired_ = false;
+}
+
+double SimNode::commandedVelocity() {
+  if (!have_command_) return sim_->params().pusher.velocity;
+  if (settings_.cmd_timeout > 0.0 && (ros::WallTime::now() - command_time_).toSec() > settings_.cmd_timeout) {
+    if (!command_expired_) {
+      ROS_WARN("thin_ice_sim: no pusher command for %.3g s (~cmd_timeout): pusher stopped", settings_.cmd_timeout);
+      command_expired_ = true;
+    }
+    return 0.0;
+  }
+  return command_velocity_;
+}
+
+bool SimNode::onPause(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
+  sim_->pause();
+  return true;
+}
+
+bool SimNode::onUnpause(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
+  if (!sim_->healthy()) {
+    ROS_WARN("thin_ice_sim: cannot unpause after a numerical blow-up; call sim/reset");
+    return false;
+  }
+  sim_->resume();
+  rtf_window_start_ = ros::WallTime::now();
+  rtf_window_sim_start_ = sim_->time();
+  return true;
+}
+
+bool SimNode::onReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
+  sim_->reset();
+  have_command_ = false;
+  last_error_.clear();
+  applied_velocity_ = sim_->pusherVelocity();
+  rtf_window_start_ = ros::WallTime::now();
+  rtf_window_sim_start_ = 0.0;
+  publishStatus();
+  return true;
+}
+
+bool SimNode::onStep(thin_ice_sim::Step::Request& request, thin_ice_sim::Step::Response& response) {
+  response.success = false;
+  if (!sim_->paused()) {
+    response.message = "sim/step needs a paused simulation (call sim/pause first)";
+  } else if (!std::isfinite(request.duration) || request.duration < 0.0) {
+    response.message = "duration must be finite and >= 0 s";
+  } else if (!sim_->healthy()) {
+    response.message = "the simulation blew up: " + sim_->lastError() + "; call sim/reset";
+  } else {
+    const long steps = request.duration > 0.0
+                           ? static_cast<long>(std::ceil(request.duration / sim_->timeStep() - 1e-9))
+                           : static_cast<long>(request.steps);
+    if (steps > 0) {
+      sim_->setPusherVelocity(applied_velocity_ = commandedVelocity());
+      sim_->step(steps);
+      checkHealth();
+      publishLoads();
+      publishClockAndTf();
+    }
+    response.success = sim_->healthy();
+    response.message = sim_->healthy() ? "stepped " + std::to_string(steps) + " steps" : sim_->lastError();
+  }
+  response.sim_time = sim_->time();
+  publishStatus();
+  return true;
+}
+
+void SimNode::checkHealth() {
+  if (sim_->healthy() || sim_->lastError() == last_error_) return;
+  last_error_ = sim_->lastError();
+  sim_->pause();
+  ROS_ERROR("thin_ice_sim: %s; simulation paused (sim/reset to start again)", last_error_.c_str());
+}
+
+void SimNode::advanceAndPublish() {
+  sim_->setPusherVelocity(applied_velocity_ = commandedVelocity());
+  sim_->advance(1.0 / settings_.load_rate);
+  checkHealth();
+  if (!sim_->healthy()) return;
+  publishLoads();
+  publishClockAndTf();
+}
+
+void SimNode::publishLoads() {
+  const LoadSample l = sim_->loads();
+  const double alpha = sim_->params().structure.calibration_factor;
+  const ros::Time stamp(sim_->time());
+  geometry_msgs::WrenchStamped wrench;
+  wrench.header.stamp = stamp;
+  wrench.header.frame_id = settings_.structure_frame;
+  wrench.wrench.force = vector3(alpha * l.horizontal_raw, alpha * l.lateral_raw, alpha * l.vertical_raw);
+  wrench.wrench.torque = vector3(alpha * l.torque.x, alpha * l.torque.y, alpha * l.torque.z);
+  wrench_pub_.publish(wrench);
+
+  thin_ice_sim::PanelLoads panels;
+  panels.header = wrench.header;
+  panels.calibration_factor = alpha;
+  const StructureParams& s = sim_->params().structure;
+  for (size_t p = 0; p < l.panel_horizontal.size(); ++p) {
+    geometry_msgs::Wrench w;
+    w.force = vector3(alpha * l.panel_horizontal[p], alpha * l.panel_lateral[p], alpha * l.panel_vertical[p]);
+    w.torque = vector3(alpha * l.panel_torque[p].x, alpha * l.panel_torque[p].y, alpha * l.panel_torque[p].z);
+    panels.panels.push_back(w);
+    panels.panel_centre_y.push_back(-0.5 * s.width + (p + 0.5) * s.width / s.panels);
+  }
+  panels_pub_.publish(panels);
+}
+
+void SimNode::publishClockAndTf() {
+  const ros::Time stamp(sim_->time());
+  if (settings_.publish_clock) {
+    rosgraph_msgs::Clock clock;
+    clock.clock = stamp;
+    clock_pub_.publish(clock);
+  }
+  geometry_msgs::TransformStamped t;
+  t.header.stamp = stamp;
+  t.header.frame_id = settings_.world_frame;
+  t.child_frame_id = settings_.pusher_frame;
+  t.transform.translation.x = sim_->pusherPosition();
+  t.transform.rotation.w = 1.0;
+  tf_.sendTransform(t);
+}
+
+void SimNode::publishStructureTransform() {
+  // The structure frame: origin where the face meets the waterline at y = 0, axes as the world's.
+  geometry_msgs::TransformStamped t;
+  t.header.stamp = ros::Time(0.0);
+  t.header.frame_id = settings_.world_frame;
+  t.child_frame_id = settings_.structure_frame;
+  t.transform.translation.x = sim_->params().structure.toe_x;
+  t.transform.rotation.w = 1.0;
+  static_tf_.sendTransform(t);
+}
+
+void SimNode::publishStatus() {
+  const LoadSample l = sim_->loads();
+  thin_ice_sim::SimStatus status;
+  status.header.stamp = ros::Time(sim_->time());
+  status.header.frame_id = settings_.world_frame;
+  status.sim_time = sim_->time();
+  status.pushed_length = sim_->pushedLength();
+  status.pusher_velocity = applied_velocity_;
+  status.real_time_factor = achieved_rtf_;
+  status.cells = static_cast<uint32_t>(sim_->cellCount());
+  status.intact_bonds = static_cast<uint32_t>(l.intact_bonds);
+  status.broken_bonds = static_cast<uint32_t>(l.broken_bonds);
+  status.contacts = static_cast<uint32_t>(l.contacts);
+  status.backend = sim_->backendName();
+  status.paused = sim_->paused();
+  status.last_error = sim_->lastError();
+  status_pub_.publish(status);
+}
+
+void SimNode::publishMarkers() {
+  if (markers_pub_.getNumSubscribers() == 0) return;
+  markers_pub_.publish(makeSceneMarkers(*sim_, settings_.world_frame, ros::Time(sim_->time())));
+}
+
+void SimNode::run() {
+  ros::WallTime pace_start = ros::WallTime::now();
+  double pace_sim_start = sim_->time();
+  rtf_window_start_ = pace_start;
+  rtf_window_sim_start_ = pace_sim_start;
+  next_marker_time_ = next_status_time_ = pace_start;
+  bool was_paused = true;
+  while (ros::ok()) {
+    ros::spinOnce();
+    const ros::WallTime now = ros::WallTime::now();
+    if (now >= next_status_time_) {
+      publishStatus();
+      next_status_time_ = now + ros::WallDuration(1.0 / settings_.status_rate);
+    }
+    if (now >= next_marker_time_) {
+      publishMarkers();
+      next_marker_time_ = now + ros::WallDuration(1.0 / settings_.marker_rate);
+    }
+    if (sim_->paused()) {
+      was_paused = true;
+      achieved_rtf_ = 0.0;
+      ros::WallDuration(0.005).sleep();
+      continue;
+    }
+    if (was_paused) {  // pacing restarts after a pause, a reset or the first step
+      pace_start = now;
+      pace_sim_start = sim_->time();
+      was_paused = false;
+    }
+    advanceAndPublish();
+    // Achieved real-time factor over windows of about one second of wall time.
+    const ros::WallTime after = ros::WallTime::now();
+    const double window = (after - rtf_window_start_).toSec();
+    if (window >= 1.0) {
+      achieved_rtf_ = (sim_->time() - rtf_window_sim_start_) / window;
+      rtf_window_start_ = after;
+      rtf_window_sim_start_ = sim_->time();
+      if (settings_.real_time_factor > 0.0 && achieved_rtf_ < 0.9 * settings_.real_time_factor) {
+        ROS_WARN_THROTTLE(10.0, "thin_ice_sim: falling behind: real-time factor %.3g of the %.3g asked for",
+                          achieved_rtf_, settings_.real_time_factor);
+      }
+    }
+    if (settings_.real_time_factor > 0.0) {
+      const double due = (sim_->time() - pace_sim_start) / settings_.real_time_factor;
+      const double ahead = due - (after - pace_start).toSec();
+      if (ahead > 0.0) {
+        ros::WallDuration(ahead).sleep();
+      } else if (ahead < -0.5) {  // far behind: do not try to catch up in a burst
+        pace_start = after;
+        pace_sim_start = sim_->time();
+      }
+    }
+  }
+}
+
+}  // namespace thin_ice

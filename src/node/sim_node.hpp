@@ -1,0 +1,91 @@
+// The thin_ice_sim ROS node: owns a Simulation and connects it to a test-rig stack, as Gazebo's
+// ROS interface does for a rigid-body world. Single-threaded: callbacks run between steps, so the
+// simulation is never touched from two threads.
+#pragma once
+
+#include <geometry_msgs/Twist.h>
+#include <ros/ros.h>
+#include <std_srvs/Empty.h>
+#include <tf2_ros/static_transform_broadcaster.h>
+#include <tf2_ros/transform_broadcaster.h>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "thin_ice_sim/Step.h"
+#include "thin_ice_sim/simulation.hpp"
+
+namespace thin_ice {
+
+/// Node parameters (private namespace ~), read once at start-up.
+struct NodeSettings {
+  std::string scenario;                 ///< ~scenario: a name in config/scenarios or a path
+  std::vector<std::string> overrides;   ///< ~set: "section.key=value" items
+  std::string backend = "cpu";          ///< ~backend: cpu | cuda | auto
+  double real_time_factor = 1.0;        ///< ~real_time_factor: target pacing; 0 = as fast as possible
+  double load_rate = 100.0;             ///< ~load_rate [Hz of simulated time]
+  double marker_rate = 10.0;            ///< ~marker_rate [Hz of wall time]
+  double status_rate = 10.0;            ///< ~status_rate [Hz of wall time]
+  bool publish_clock = true;            ///< ~publish_clock
+  double cmd_timeout = 1.0;             ///< ~cmd_timeout [s wall]; 0 = commands never expire
+  double max_pusher_speed = 0.5;        ///< ~max_pusher_speed [m/s]
+  bool start_paused = false;            ///< ~paused
+  std::string world_frame = "world";    ///< ~world_frame
+  std::string structure_frame = "structure";  ///< ~structure_frame
+  std::string pusher_frame = "pusher";  ///< ~pusher_frame
+};
+
+/// Reads and checks the settings; throws std::invalid_argument naming the parameter.
+NodeSettings readNodeSettings(const ros::NodeHandle& private_nh);
+
+class SimNode {
+ public:
+  /// Loads the scenario and builds the simulation; throws (ScenarioError, std::runtime_error)
+  /// with a message naming the file and key when it cannot.
+  SimNode(ros::NodeHandle nh, ros::NodeHandle private_nh);
+  /// Steps, publishes and paces until ROS shuts down.
+  void run();
+
+ private:
+  void onCommand(const geometry_msgs::Twist& command);
+  bool onPause(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
+  bool onUnpause(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
+  bool onReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
+  bool onStep(thin_ice_sim::Step::Request& request, thin_ice_sim::Step::Response& response);
+
+  /// Pusher velocity for the next step: the scenario's until the first command, then the last
+  /// command until it is older than cmd_timeout, then zero.
+  double commandedVelocity();
+  /// Advances one load period (or less while paused: nothing) and publishes what is due.
+  void advanceAndPublish();
+  void publishLoads();
+  void publishClockAndTf();
+  void publishStatus();
+  void publishMarkers();
+  void publishStructureTransform();
+  /// Checks the simulation after a step: on a blow-up, pause and report.
+  void checkHealth();
+
+  ros::NodeHandle nh_, private_nh_;
+  NodeSettings settings_;
+  std::unique_ptr<Simulation> sim_;
+  ros::Publisher wrench_pub_, panels_pub_, markers_pub_, status_pub_, clock_pub_;
+  ros::Subscriber command_sub_;
+  ros::ServiceServer pause_srv_, unpause_srv_, reset_srv_, step_srv_;
+  tf2_ros::TransformBroadcaster tf_;
+  tf2_ros::StaticTransformBroadcaster static_tf_;
+
+  bool have_command_ = false;
+  bool command_expired_ = false;
+  double command_velocity_ = 0.0;       ///< [m/s] last accepted command
+  ros::WallTime command_time_;          ///< when it arrived
+  double applied_velocity_ = 0.0;       ///< [m/s] used in the last step
+  double achieved_rtf_ = 0.0;           ///< simulated s per wall s over the last second
+  ros::WallTime rtf_window_start_;
+  double rtf_window_sim_start_ = 0.0;
+  ros::WallTime next_marker_time_, next_status_time_;
+  std::string last_error_;
+};
+
+}  // namespace thin_ice

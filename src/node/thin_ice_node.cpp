@@ -1,0 +1,21 @@
+// thin_ice_node: the Thin Ice Model simulator as a ROS node (see README, "ROS interface").
+#include <ros/ros.h>
+
+#include <cstdio>
+#include <exception>
+
+#include "sim_node.hpp"
+
+int main(int argc, char** argv) {
+  ros::init(argc, argv, "thin_ice_sim");
+  try {
+    thin_ice::SimNode node(ros::NodeHandle(), ros::NodeHandle("~"));
+    node.run();
+  } catch (const std::exception& e) {
+    ROS_FATAL("thin_ice_sim: %s", e.what());
+    // rosconsole may not flush before a quick exit: say it on stderr too.
+    std::fprintf(stderr, "[FATAL] thin_ice_sim: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,195 @@
+#!/usr/bin/python3
+"""rostest of the thin_ice_sim node's interface (test/node_interface.test).
+
+The tests run in name order against one node: rate and stamps, markers, pusher commands (speed,
+clamping, dropping, timeout), pause/step/reset, and finally the loads once the ice reaches the
+structure.
+"""
+import math
+import threading
+import time
+import unittest
+
+import rospy
+import rostest
+import tf2_ros
+from geometry_msgs.msg import Twist, WrenchStamped
+from rosgraph_msgs.msg import Clock
+from std_srvs.srv import Empty
+from visualization_msgs.msg import MarkerArray
+
+from thin_ice_sim.msg import PanelLoads, SimStatus
+from thin_ice_sim.srv import Step
+
+LOAD_PERIOD = 0.01  # [s] of simulated time: 1 / ~load_rate
+TIME_STEP = 5e-6    # [s] quick.yaml's dt
+
+
+class NodeInterfaceTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        rospy.init_node("test_node_interface")
+        cls.lock = threading.Lock()
+        cls.wrenches = []
+        cls.panels = []
+        cls.clocks = []
+        cls.status = None
+        cls.markers = None
+        rospy.Subscriber("structure/wrench", WrenchStamped, cls._on_wrench, queue_size=1000)
+        rospy.Subscriber("structure/panel_loads", PanelLoads, cls._on_panels, queue_size=100)
+        rospy.Subscriber("/clock", Clock, cls._on_clock, queue_size=1000)
+        rospy.Subscriber("sim/status", SimStatus, cls._on_status, queue_size=10)
+        rospy.Subscriber("ice/cells", MarkerArray, cls._on_markers, queue_size=2)
+        cls.command = rospy.Publisher("pusher/cmd_vel", Twist, queue_size=10)
+        for name in ("sim/pause", "sim/unpause", "sim/reset", "sim/step"):
+            rospy.wait_for_service(name, timeout=60.0)
+        cls.pause = rospy.ServiceProxy("sim/pause", Empty)
+        cls.unpause = rospy.ServiceProxy("sim/unpause", Empty)
+        cls.reset = rospy.ServiceProxy("sim/reset", Empty)
+        cls.step = rospy.ServiceProxy("sim/step", Step)
+        cls.tf_buffer = tf2_ros.Buffer()
+        cls.tf_listener = tf2_ros.TransformListener(cls.tf_buffer)
+
+    @classmethod
+    def _on_wrench(cls, msg):
+        with cls.lock:
+            cls.wrenches.append(msg)
+
+    @classmethod
+    def _on_panels(cls, msg):
+        with cls.lock:
+            cls.panels.append(msg)
+
+    @classmethod
+    def _on_clock(cls, msg):
+        with cls.lock:
+            cls.clocks.append(msg.clock.to_sec())
+
+    @classmethod
+    def _on_status(cls, msg):
+        with cls.lock:
+            cls.status = msg
+
+    @classmethod
+    def _on_markers(cls, msg):
+        with cls.lock:
+            cls.markers = msg
+
+    def wait_for(self, predicate, timeout, what):
+        deadline = time.time() + timeout
+        while time.time() < deadline:
+            if predicate():
+                return
+            time.sleep(0.02)
+        self.fail("timed out after %.0f s waiting for %s" % (timeout, what))
+
+    def latest_status(self, after_wall=None):
+        """A status message received after now (the node publishes it at 10 Hz of wall time)."""
+        with self.lock:
+            self.__class__.status = None
+        self.wait_for(lambda: self.status is not None, 10.0, "sim/status")
+        return self.status
+
+    def pusher_x(self):
+        t = self.tf_buffer.lookup_transform("world", "pusher", rospy.Time(0), rospy.Duration(5.0))
+        return t.transform.translation.x, t.header.stamp.to_sec()
+
+    def send(self, velocity, seconds):
+        """Publishes a pusher command at 20 Hz for `seconds` of wall time."""
+        end = time.time() + seconds
+        while time.time() < end:
+            self.command.publish(self._twist(velocity))
+            time.sleep(0.05)
+
+    @staticmethod
+    def _twist(velocity):
+        t = Twist()
+        t.linear.x = velocity
+        return t
+
+    def test_01_wrench_rate_and_stamps_follow_the_clock(self):
+        self.wait_for(lambda: len(self.wrenches) > 50, 60.0, "50 wrench messages")
+        with self.lock:
+            stamps = [w.header.stamp.to_sec() for w in self.wrenches[-50:]]
+            frames = {w.header.frame_id for w in self.wrenches}
+            clocks = list(self.clocks)
+        gaps = [b - a for a, b in zip(stamps, stamps[1:])]
+        self.assertTrue(all(g > 0 for g in gaps), "stamps must increase")
+        gaps.sort()
+        self.assertAlmostEqual(gaps[len(gaps) // 2], LOAD_PERIOD, delta=0.01 * LOAD_PERIOD)
+        self.assertEqual(frames, {"structure"})
+        self.assertTrue(clocks, "no /clock message")
+        self.assertGreaterEqual(max(clocks) + 1e-9, stamps[0])
+        self.assertTrue(all(b >= a for a, b in zip(clocks, clocks[1:])), "/clock went backwards")
+        with self.lock:
+            self.assertTrue(self.panels and len(self.panels[-1].panels) == 2, "two panel wrenches")
+
+    def test_02_markers_arrive(self):
+        self.wait_for(lambda: self.markers is not None, 30.0, "ice/cells markers")
+        namespaces = {m.ns: m for m in self.markers.markers}
+        for ns in ("cells", "outlines", "structure", "pusher", "bottom"):
+            self.assertIn(ns, namespaces)
+        self.assertGreater(len(namespaces["cells"].points), 0)
+        self.assertEqual(len(namespaces["cells"].points), len(namespaces["cells"].colors))
+
+    def test_03_pusher_moves_at_the_commanded_speed(self):
+        self.send(0.1, 1.0)  # the command is in effect
+        x0, t0 = self.pusher_x()
+        self.send(0.1, 2.0)
+        x1, t1 = self.pusher_x()
+        self.assertGreater(t1 - t0, 0.02, "simulated time did not advance")
+        self.assertAlmostEqual((x1 - x0) / (t1 - t0), 0.1, delta=0.02 * 0.1)
+
+    def test_04_bad_commands_are_clamped_or_dropped(self):
+        self.send(5.0, 0.5)
+        self.assertAlmostEqual(self.latest_status().pusher_velocity, 0.5, delta=1e-9)  # ~max_pusher_speed
+        self.send(float("nan"), 0.5)
+        self.send(float("inf"), 0.3)
+        self.assertAlmostEqual(self.latest_status().pusher_velocity, 0.5, delta=1e-9)  # dropped
+        self.send(-5.0, 0.3)
+        self.assertAlmostEqual(self.latest_status().pusher_velocity, -0.5, delta=1e-9)
+
+    def test_05_pusher_stops_after_the_command_timeout(self):
+        self.send(0.1, 0.5)
+        time.sleep(1.6)  # ~cmd_timeout is 1 s of wall time
+        self.assertEqual(self.latest_status().pusher_velocity, 0.0)
+        x0, t0 = self.pusher_x()
+        time.sleep(0.5)
+        x1, t1 = self.pusher_x()
+        self.assertGreater(t1, t0)
+        self.assertAlmostEqual(x1, x0, delta=1e-12)
+
+    def test_06_pause_step_and_reset(self):
+        self.pause()
+        time.sleep(0.3)
+        before = self.latest_status()
+        time.sleep(0.5)
+        after = self.latest_status()
+        self.assertTrue(after.paused)
+        self.assertEqual(after.sim_time, before.sim_time)
+        answer = self.step(steps=0, duration=0.05)
+        self.assertTrue(answer.success, answer.message)
+        self.assertAlmostEqual(answer.sim_time - before.sim_time, 0.05, delta=TIME_STEP)
+        answer = self.step(steps=100, duration=0.0)
+        self.assertAlmostEqual(answer.sim_time - before.sim_time, 0.05 + 100 * TIME_STEP, delta=1e-9)
+        self.reset()
+        status = self.latest_status()
+        self.assertEqual(status.sim_time, 0.0)
+        self.assertEqual(status.pushed_length, 0.0)
+        self.assertEqual(status.broken_bonds, 0)
+        self.unpause()
+        self.assertFalse(self.latest_status().paused)
+
+    def test_07_loads_become_nonzero_when_the_ice_reaches_the_structure(self):
+        # After the reset the scenario's 0.2 m/s holds again (no command since), and the strip
+        # front reaches the structure after about 5 s of simulated time.
+        def loaded():
+            with self.lock:
+                return any(w.wrench.force.x > 1.0 for w in self.wrenches[-200:])
+        self.wait_for(loaded, 240.0, "a horizontal load above 1 N")
+        self.wait_for(lambda: self.latest_status().broken_bonds > 0, 120.0, "broken bonds")
+        self.assertEqual(self.latest_status().last_error, "")
+
+
+if __name__ == "__main__":
+    rostest.rosrun("thin_ice_sim", "node_interface", NodeInterfaceTest)
