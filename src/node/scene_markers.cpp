@@ -44,10 +44,10 @@ visualization_msgs::Marker baseMarker(const std::string& frame, const ros::Time&
   return m;
 }
 
-/// Two triangles of the quadrilateral a-b-c-d.
+/// The quadrilateral a-b-c-d as triangles of both windings, so that rviz lights it from either side.
 void addQuad(visualization_msgs::Marker& m, const geometry_msgs::Point& a, const geometry_msgs::Point& b,
              const geometry_msgs::Point& c, const geometry_msgs::Point& d) {
-  m.points.insert(m.points.end(), {a, b, c, a, c, d});
+  m.points.insert(m.points.end(), {a, b, c, a, c, d, a, c, b, a, d, c});
 }
 
 }  // namespace

@@ -74,6 +74,7 @@ NodeSettings readNodeSettings(const ros::NodeHandle& pnh) {
   pnh.param("cmd_timeout", s.cmd_timeout, s.cmd_timeout);
   pnh.param("max_pusher_speed", s.max_pusher_speed, s.max_pusher_speed);
   pnh.param("paused", s.start_paused, s.start_paused);
+  pnh.param("stop_time", s.stop_time, s.stop_time);
   pnh.param("world_frame", s.world_frame, s.world_frame);
   pnh.param("structure_frame", s.structure_frame, s.structure_frame);
   pnh.param("pusher_frame", s.pusher_frame, s.pusher_frame);
@@ -83,6 +84,7 @@ NodeSettings readNodeSettings(const ros::NodeHandle& pnh) {
   requirePositive("status_rate", s.status_rate, false);
   requirePositive("cmd_timeout", s.cmd_timeout, true);
   requirePositive("max_pusher_speed", s.max_pusher_speed, false);
+  requirePositive("stop_time", s.stop_time, true);
   parseBackendKind(s.backend, "parameter ~backend");
   return s;
 }
@@ -315,6 +317,12 @@ void SimNode::run() {
       was_paused = false;
     }
     advanceAndPublish();
+    if (settings_.stop_time > 0.0 && sim_->time() >= settings_.stop_time - 1e-12) {
+      publishStatus();
+      ROS_WARN("thin_ice_sim: reached ~stop_time = %.6g s of simulated time: shutting down", settings_.stop_time);
+      ros::shutdown();
+      break;
+    }
     // Achieved real-time factor over windows of about one second of wall time.
     const ros::WallTime after = ros::WallTime::now();
     const double window = (after - rtf_window_start_).toSec();

@@ -31,6 +31,7 @@ struct NodeSettings {
   double cmd_timeout = 1.0;             ///< ~cmd_timeout [s wall]; 0 = commands never expire
   double max_pusher_speed = 0.5;        ///< ~max_pusher_speed [m/s]
   bool start_paused = false;            ///< ~paused
+  double stop_time = 0.0;               ///< ~stop_time [s simulated]: shut down on reaching it; 0 = never
   std::string world_frame = "world";    ///< ~world_frame
   std::string structure_frame = "structure";  ///< ~structure_frame
   std::string pusher_frame = "pusher";  ///< ~pusher_frame
