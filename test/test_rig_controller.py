@@ -49,6 +49,7 @@ class RigControllerTest(unittest.TestCase):
             means.append("%.1f-%.1f s: %.0f N" % (t0, t0 + WINDOW, sum(w) / len(w) if w else float("nan")))
             t0 += WINDOW
         print("window means: " + ", ".join(means))
+        print("samples: %d, max %.1f N, first stamps %s" % (len(data), max(f for _, f in data), [round(t, 3) for t, _ in data[:5]]))
         start = SETTLE
         while start + WINDOW <= END + 1e-9:
             window = [f for t, f in data if start <= t < start + WINDOW]
