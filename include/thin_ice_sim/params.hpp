@@ -81,6 +81,7 @@ struct ChannelParams {
 struct NumericsParams {
   double time_step = 5e-6;          ///< dt [s]; refused above the critical step
   double critical_step_safety = 0.8;///< dt must be <= this x the critical step of the stiffest spring
+                                    ///< (in (0, 1]; up to 1000 only to provoke a blow-up in tests)
   int max_steps_between_rebuilds = 1000;  ///< N_iter of Algorithm 1
   double rebuild_displacement = 0.1;      ///< rebuild when a cell moved this x l-bar [-]
   double rebuild_rotation_deg = 2.0;      ///< ... or turned this much [deg] (delta_rot)
