@@ -60,7 +60,7 @@ ContactConstants iceContact() {
   return {0.05, 3.0 * 300e6 / 0.7, 3.0 * 300e6 / 0.7, 1.0, 1.0, 0.3, 0.2, 1e-3};
 }
 
-TEST(Contact, HorizontalForceIsEquation1TimesHCubed) {
+TEST(Contact, HorizontalForceIsEquation1TimesHCubedForLevelCells) {
   // Squares 0.2 m, overlapping by 1 mm along x, level: S = 0.2e-3 m^2, L = 0.2 m,
   // F = (3E/(1-nu)) h S/L = (9e8/0.7) 0.05 1e-3 = 64285.7 N along +x on j. No vertical force.
   const auto a = square({0.0, 0.0}, 0.2), b = square({0.199, 0.0}, 0.2);
@@ -75,14 +75,15 @@ TEST(Contact, HorizontalForceIsEquation1TimesHCubed) {
 
 TEST(Contact, VerticalForceIsEquation3) {
   // Same overlap, j 0.02 m higher: z = 0.4, K = 0.6 (n = 1), Z = 0.03 m,
-  // F_v = 0.6 * 0.03 * (9e8/0.7) * 2e-4 / 0.05 = 92571.4 N upwards on j.
+  // F_v = 0.6 * 0.03 * (9e8/0.7) * 2e-4 / 0.05 = 92571.4 N upwards on j, and the horizontal
+  // force over the 0.03 m face: F_n = 0.6 (9e8/0.7) 0.03 1e-3 = 23142.9 N.
   const auto a = square({0.0, 0.0}, 0.2), b = square({0.199, 0.0}, 0.2);
   const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
   const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
   const BodyState j = {{0.199, 0.0}, 0.02, {0, 0}, 0.0, 0.0, 1.84};
   const PairForce f = demContactForce(o, i, j, iceContact());
   EXPECT_NEAR(f.fz_on_j, 0.6 * 0.03 * 9e8 / 0.7 * 2e-4 / 0.05, 1e-6 * 92571.4);
-  EXPECT_NEAR(f.force_on_j.x, 0.6 * 9e8 / 0.7 * 0.05 * 1e-3, 1e-6 * 38571.4);
+  EXPECT_NEAR(f.force_on_j.x, 0.6 * 9e8 / 0.7 * 0.03 * 1e-3, 1e-6 * 23142.9);
 }
 
 TEST(Contact, EqualAndOppositeWhicheverOrder) {

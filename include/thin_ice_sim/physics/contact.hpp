@@ -1,7 +1,9 @@
 // Dynamic (DEM) contact between two cells whose polygons overlap, paper Eqs. (1)-(4) read as
 // SPEC-NOTES fixes them:
-//   F_n = K_n(z) (3E/(1-nu)) h S/L        Eq. (1) x h^3: S/L is the mean overlap depth, so this is
-//                                         a planar contact of stiffness (3E/(1-nu)) h per metre
+//   F_n = K_n(z) (3E/(1-nu)) Z S/L        Eq. (1) x h^3 with the face height h replaced by the
+//                                         vertical overlap Z (= h for level cells): S/L is the mean
+//                                         overlap depth, so this is a planar contact of stiffness
+//                                         (3E/(1-nu)) Z per metre
 //   F_v = K_v(z) Z (3E_v/(1-nu)) S/h       Eq. (3), Z = max(0, h - |z_j - z_i|) (Eq. 2), pushing
 //                                         the cells apart vertically (zero when level)
 //   both act at the overlap centroid; the yaw moment is (point - centroid) x F (Eq. 4).
@@ -74,14 +76,17 @@ TIS_HD PairForce demContactForce(const PolygonOverlap& overlap, const BodyState&
   const Vec2 n = overlap.normal;
   const double approach = dot(relative, n);  // > 0: separating
 
-  // Eq. (1) x h^3, with damping of stiffness k = K_n E' h.
-  const double stiffness_h = k_h * c.plane_modulus * h;
+  // Eq. (1) x h^3 with the contact face h high replaced by the vertical overlap Z of Eq. (2):
+  // two slabs at different heights touch over Z, not h (equal at dz = 0). Without it a piece
+  // resting on another (|dz| just below h, overlap S the size of a cell) got a horizontal kick of
+  // order 1e5 N and blew up (docs/model.md). Damping of stiffness k = K_n E' Z.
+  const double overlap_z = fmax(0.0, h - fabs(dz));
+  const double stiffness_h = k_h * c.plane_modulus * overlap_z;
   double normal = stiffness_h * overlap.area / overlap.chord_length;
   normal -= 2.0 * c.damping_ratio * sqrt(stiffness_h * reduced_mass) * approach;
   if (normal < 0.0) normal = 0.0;
 
   // Eqs. (2)-(3), with damping of stiffness K_v E_v' S / h.
-  const double overlap_z = fmax(0.0, h - fabs(dz));
   const double stiffness_v = k_v * c.vertical_modulus * overlap.area / h;
   const double side = dz > 0.0 ? 1.0 : (dz < 0.0 ? -1.0 : 0.0);
   double vertical = stiffness_v * overlap_z;
