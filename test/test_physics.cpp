@@ -232,6 +232,29 @@ TEST(PlaneContact, VerticalPlaneVolumeByHand) {
   EXPECT_NEAR(p.centroid.y, 0.0, 1e-12);
 }
 
+TEST(PlaneContact, TwelveGonCutToAPanelStripStillIntegratesAndOversizeInputIsRefused) {
+  // A regular 12-gon of circumradius 0.1 cut to the strip |y| <= 0.05 has 14 vertices at most;
+  // behind the vertical plane x = 0 (solid x > 0) half of the strip's area lies in the solid.
+  std::vector<Vec2> dodecagon;
+  for (int k = 0; k < 12; ++k) dodecagon.push_back({0.1 * std::cos(k * M_PI / 6 + 0.1), 0.1 * std::sin(k * M_PI / 6 + 0.1)});
+  Vec2 half[kMaxSlabVertices], strip[kMaxSlabVertices];
+  const int na = clipPolygonByHalfPlane(dodecagon.data(), 12, 0.0, 1.0, 0.05, half);
+  const int nb = clipPolygonByHalfPlane(half, na, 0.0, -1.0, 0.05, strip);
+  ASSERT_LE(nb, kMaxSlabVertices);
+  const double strip_area = polygonArea(strip, nb);
+  const RigidPlane plane = {-1.0, 0.0, 0.0, 0.0};
+  const SlabPenetration p = slabPenetration(strip, nb, -0.025, 0.025, plane);
+  // The strip is symmetric about x = 0 only approximately (the 12-gon is turned by 0.1 rad):
+  // compare with the area of the part x > 0 computed by one more clip.
+  Vec2 right[kMaxSlabVertices + 1];
+  const int nr = clipPolygonByHalfPlane(strip, nb, -1.0, 0.0, 0.0, right);
+  EXPECT_NEAR(p.volume, polygonArea(right, nr) * 0.05, 1e-15);
+  EXPECT_GT(p.volume, 0.3 * strip_area * 0.05);
+  std::vector<Vec2> too_many(kMaxSlabVertices + 1, Vec2{0.0, 0.0});
+  for (int k = 0; k <= kMaxSlabVertices; ++k) too_many[k] = {std::cos(k * 0.4), std::sin(k * 0.4)};
+  EXPECT_EQ(slabPenetration(too_many.data(), kMaxSlabVertices + 1, -0.025, 0.025, plane).volume, 0.0);
+}
+
 TEST(PlaneContact, InclinedFaceVolumeByHandAndForceNormalToIt) {
   // Face at 60 deg through x = 0.1 at z = 0, solid towards +x: m = (-sin 60, 0, cos 60).
   // A square slab [-0.1, 0.1]^2 x [-0.025, 0.025]: at level z the face is at x = 0.1 + z cot 60,

@@ -272,15 +272,21 @@ class CpuBackend final : public Backend {
       const RigidPlane plate = {1.0, 0.0, 0.0, pusher_x_};
       pusher_fx_[k] = apply(slabPenetration(poly, n, z_low, z_high, plate), plate, c.pusher, pusher_velocity).fx;
     }
-    // Basin walls (or the structure's side panels): solid |y| > half width.
-    if (c.walls_enabled && box[1] > c.wall_x_start) {
+    // Basin walls (or the structure's side panels): solid |y| > half width, for x >= wall_x_start
+    // (only the part of the cell beyond that x meets a side panel).
+    if (c.walls_enabled && box[1] > c.wall_x_start &&
+        (box[3] > c.wall_half_width || box[2] < -c.wall_half_width)) {
+      Vec2 part[kV + 1];
+      const bool whole = box[0] >= c.wall_x_start;
+      const int count = whole ? n : clipPolygonByHalfPlane(poly, n, -1.0, 0.0, -c.wall_x_start, part);
+      const Vec2* reach = whole ? poly : part;
       if (box[3] > c.wall_half_width) {
         const RigidPlane wall = {0.0, -1.0, 0.0, -c.wall_half_width};
-        apply(slabPenetration(poly, n, z_low, z_high, wall), wall, c.wall, 0.0);
+        apply(slabPenetration(reach, count, z_low, z_high, wall), wall, c.wall, 0.0);
       }
       if (box[2] < -c.wall_half_width) {
         const RigidPlane wall = {0.0, 1.0, 0.0, -c.wall_half_width};
-        apply(slabPenetration(poly, n, z_low, z_high, wall), wall, c.wall, 0.0);
+        apply(slabPenetration(reach, count, z_low, z_high, wall), wall, c.wall, 0.0);
       }
     }
     // False bottom: solid z < bottom_z for x >= bottom_x_start.
@@ -305,7 +311,7 @@ class CpuBackend final : public Backend {
         s.first_panel = first;
         for (int p = first; p <= last && s.panel_count < kMaxPanelsPerCell; ++p) {
           const double y0 = c.structure_y_min + p * c.panel_width, y1 = y0 + c.panel_width;
-          Vec2 strip_a[kV + 1], strip[kV + 2];
+          Vec2 strip_a[kMaxSlabVertices], strip[kMaxSlabVertices];  // n + 1, then n + 2 vertices
           const int na = clipPolygonByHalfPlane(poly, n, 0.0, -1.0, -y0, strip_a);
           const int nb = na >= 3 ? clipPolygonByHalfPlane(strip_a, na, 0.0, 1.0, y1, strip) : 0;
           const SlabPenetration pen = slabPenetration(strip, nb, z_low, std::min(z_high, c.structure_top_z), face);

@@ -23,7 +23,8 @@ namespace {
 const std::string kScenarioDir = THIN_ICE_SCENARIO_DIR;
 
 std::string resolveScenario(const std::string& name) {
-  if (name.find('/') != std::string::npos || name.size() > 5 && name.substr(name.size() - 5) == ".yaml") {
+  const bool has_yaml_suffix = name.size() > 5 && name.substr(name.size() - 5) == ".yaml";
+  if (name.find('/') != std::string::npos || has_yaml_suffix) {
     return name;
   }
   return kScenarioDir + "/" + name + ".yaml";

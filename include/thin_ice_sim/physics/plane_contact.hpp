@@ -21,6 +21,10 @@
 
 namespace thin_ice {
 
+/// Largest vertex count of a polygon handed to the slab routines: a cell (kMaxPolygonVertices)
+/// cut to a panel's strip by two half-planes gains at most two vertices.
+constexpr int kMaxSlabVertices = kMaxPolygonVertices + 2;
+
 /// A rigid plane: solid where m . (p - p0) < 0.
 struct RigidPlane {
   double mx, my, mz;  ///< unit outward normal
@@ -44,11 +48,12 @@ TIS_HD int clipPolygonByHalfPlane(const Vec2* in, int n, double a, double b, dou
 /// Area [m^2] and first moments [m^3] of the part of a convex polygon where a x + b y <= c.
 TIS_HD void cutAreaAndMoments(const Vec2* poly, int n, double a, double b, double c, double& area,
                               double& moment_x, double& moment_y) {
-  Vec2 cut[kMaxPolygonVertices + 1];
-  const int m = clipPolygonByHalfPlane(poly, n, a, b, c, cut);
   area = 0.0;
   moment_x = 0.0;
   moment_y = 0.0;
+  Vec2 cut[kMaxSlabVertices + 1];
+  if (n > kMaxSlabVertices) return;  // outside the contract: no area rather than an overrun
+  const int m = clipPolygonByHalfPlane(poly, n, a, b, c, cut);
   if (m < 3) return;
   const Vec2 v0 = cut[0];
   for (int k = 1; k + 1 < m; ++k) {
@@ -69,14 +74,14 @@ struct SlabPenetration {
 };
 
 /// Volume of the slab polygon x [z_low, z_high] inside the solid of `plane`, and its centroid.
-/// The polygon has at most kMaxPolygonVertices vertices (world frame).
+/// The polygon has at most kMaxSlabVertices vertices (world frame); a larger one gives no volume.
 TIS_HD SlabPenetration slabPenetration(const Vec2* poly, int n, double z_low, double z_high,
                                        const RigidPlane& plane) {
   SlabPenetration r;
   r.volume = 0.0;
   r.centroid = {0.0, 0.0};
   r.z = 0.5 * (z_low + z_high);
-  if (!(z_high > z_low) || n < 3) return r;
+  if (!(z_high > z_low) || n < 3 || n > kMaxSlabVertices) return r;
   // Solid at level z: m_xy . q < offset - m_z z, i.e. -m_xy . q <= -(offset - m_z z) is outside.
   // Region inside the solid: mx x + my y <= offset - mz z.
   const double horizontal = sqrt(plane.mx * plane.mx + plane.my * plane.my);
@@ -95,7 +100,7 @@ TIS_HD SlabPenetration slabPenetration(const Vec2* poly, int n, double z_low, do
     return r;
   }
   // Break levels: where the cutting line passes a vertex (only when the plane is inclined).
-  double levels[kMaxPolygonVertices + 2];
+  double levels[kMaxSlabVertices + 2];
   int count = 0;
   levels[count++] = z_low;
   if (fabs(plane.mz) > 1e-12) {
@@ -105,7 +110,7 @@ TIS_HD SlabPenetration slabPenetration(const Vec2* poly, int n, double z_low, do
     }
   }
   levels[count++] = z_high;
-  for (int a = 1; a < count; ++a) {  // insertion sort: at most 14 levels
+  for (int a = 1; a < count; ++a) {  // insertion sort: at most kMaxSlabVertices + 2 levels
     const double v = levels[a];
     int b = a - 1;
     while (b >= 0 && levels[b] > v) {
