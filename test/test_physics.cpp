@@ -56,18 +56,25 @@ std::vector<Vec2> square(Vec2 centre, double side) {
   return {centre + Vec2{-a, -a}, centre + Vec2{a, -a}, centre + Vec2{a, a}, centre + Vec2{-a, a}};
 }
 
+/// Yaw inertia of a 0.2 m square of 1.84 kg: m a^2 / 6 [kg m^2].
+constexpr double kSquareInertia = 1.84 * 0.04 / 6.0;
+
+/// Eqs. (1)-(3) alone: no crushing limit (1e12 Pa), friction bound of dt = 1e-6 s.
 ContactConstants iceContact() {
-  return {0.05, 3.0 * 300e6 / 0.7, 3.0 * 300e6 / 0.7, 1.0, 1.0, 0.3, 0.2, 1e-3};
+  return {0.05, 3.0 * 300e6 / 0.7, 3.0 * 300e6 / 0.7, 1.0, 1.0, 0.3, 0.5 / 1e-6, 1e12, 0.2, 1e-3};
 }
+
+/// An existing pair that had no overlap before this step (a new pair would pass -1).
+constexpr double kNoReference = 0.0;
 
 TEST(Contact, HorizontalForceIsEquation1TimesHCubedForLevelCells) {
   // Squares 0.2 m, overlapping by 1 mm along x, level: S = 0.2e-3 m^2, L = 0.2 m,
   // F = (3E/(1-nu)) h S/L = (9e8/0.7) 0.05 1e-3 = 64285.7 N along +x on j. No vertical force.
   const auto a = square({0.0, 0.0}, 0.2), b = square({0.199, 0.0}, 0.2);
   const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
-  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
-  const BodyState j = {{0.199, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
-  const PairForce f = demContactForce(o, i, j, iceContact());
+  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const BodyState j = {{0.199, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const PairForce f = demContactForce(o, i, j, iceContact(), kNoReference);
   EXPECT_NEAR(f.force_on_j.x, 9e8 / 0.7 * 0.05 * 1e-3, 1e-6 * 64285.7);
   EXPECT_NEAR(f.force_on_j.y, 0.0, 1e-9);
   EXPECT_EQ(f.fz_on_j, 0.0);
@@ -79,19 +86,19 @@ TEST(Contact, VerticalForceIsEquation3) {
   // force over the 0.03 m face: F_n = 0.6 (9e8/0.7) 0.03 1e-3 = 23142.9 N.
   const auto a = square({0.0, 0.0}, 0.2), b = square({0.199, 0.0}, 0.2);
   const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
-  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
-  const BodyState j = {{0.199, 0.0}, 0.02, {0, 0}, 0.0, 0.0, 1.84};
-  const PairForce f = demContactForce(o, i, j, iceContact());
+  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const BodyState j = {{0.199, 0.0}, 0.02, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const PairForce f = demContactForce(o, i, j, iceContact(), kNoReference);
   EXPECT_NEAR(f.fz_on_j, 0.6 * 0.03 * 9e8 / 0.7 * 2e-4 / 0.05, 1e-6 * 92571.4);
   EXPECT_NEAR(f.force_on_j.x, 0.6 * 9e8 / 0.7 * 0.03 * 1e-3, 1e-6 * 23142.9);
 }
 
 TEST(Contact, EqualAndOppositeWhicheverOrder) {
   const auto a = square({0.0, 0.0}, 0.2), b = square({0.15, 0.05}, 0.2);
-  const BodyState i = {{0.0, 0.0}, 0.001, {0.1, 0.02}, 0.0, 0.3, 1.84};
-  const BodyState j = {{0.15, 0.05}, 0.0, {-0.05, 0.0}, 0.01, -0.2, 1.5};
-  const PairForce ij = demContactForce(intersectConvexPolygons(a.data(), 4, b.data(), 4), i, j, iceContact());
-  const PairForce ji = demContactForce(intersectConvexPolygons(b.data(), 4, a.data(), 4), j, i, iceContact());
+  const BodyState i = {{0.0, 0.0}, 0.001, {0.1, 0.02}, 0.0, 0.3, 1.84, kSquareInertia};
+  const BodyState j = {{0.15, 0.05}, 0.0, {-0.05, 0.0}, 0.01, -0.2, 1.5, 1.5 * 0.04 / 6.0};
+  const PairForce ij = demContactForce(intersectConvexPolygons(a.data(), 4, b.data(), 4), i, j, iceContact(), kNoReference);
+  const PairForce ji = demContactForce(intersectConvexPolygons(b.data(), 4, a.data(), 4), j, i, iceContact(), kNoReference);
   // The force on j computed as (i, j) is minus the force on j computed as (j, i) (there: on "i").
   EXPECT_NEAR(ij.force_on_j.x, -ji.force_on_j.x, 1e-9 * std::fabs(ij.force_on_j.x));
   EXPECT_NEAR(ij.force_on_j.y, -ji.force_on_j.y, 1e-9 * std::fabs(ij.force_on_j.x));
@@ -113,14 +120,16 @@ TEST(Contact, CollisionConservesMomentumAndGainsNoEnergy) {
   ContactConstants c = iceContact();
   c.thickness = h;
   bool touched = false;
+  double reference = -1.0;  // new pair, apart: no reference overlap
   for (int step = 0; step < 40000; ++step) {
     const auto pa = square({0, 0}, side), pb = square({0, 0}, side);
     std::vector<Vec2> wa, wb;
     for (const Vec2& v : pa) wa.push_back(Vec2{a.x, a.y} + rotate(v, std::cos(a.yaw), std::sin(a.yaw)));
     for (const Vec2& v : pb) wb.push_back(Vec2{b.x, b.y} + rotate(v, std::cos(b.yaw), std::sin(b.yaw)));
-    const BodyState ia = {{a.x, a.y}, a.z, {a.vx, a.vy}, a.vz, a.wz, mass_a};
-    const BodyState ib = {{b.x, b.y}, b.z, {b.vx, b.vy}, b.vz, b.wz, mass_b};
-    const PairForce f = demContactForce(intersectConvexPolygons(wa.data(), 4, wb.data(), 4), ia, ib, c);
+    const BodyState ia = {{a.x, a.y}, a.z, {a.vx, a.vy}, a.vz, a.wz, mass_a, inertia_a};
+    const BodyState ib = {{b.x, b.y}, b.z, {b.vx, b.vy}, b.vz, b.wz, mass_b, inertia_b};
+    const PairForce f = demContactForce(intersectConvexPolygons(wa.data(), 4, wb.data(), 4), ia, ib, c, reference);
+    reference = f.reference_area;
     touched = touched || f.touching;
     const double ta = cross(f.point - Vec2{a.x, a.y}, -f.force_on_j);
     const double tb = cross(f.point - Vec2{b.x, b.y}, f.force_on_j);
@@ -133,6 +142,87 @@ TEST(Contact, CollisionConservesMomentumAndGainsNoEnergy) {
   EXPECT_NEAR(mass_a * a.vx + mass_b * b.vx, px0, 1e-9);
   EXPECT_NEAR(mass_a * a.vy + mass_b * b.vy, py0, 1e-9);
   EXPECT_LE(energy(), e0 * (1.0 + 1e-6));
+}
+
+TEST(Contact, CrushingLimitsTheNormalForceToSigmaCTimesTheFace) {
+  // The 1 mm overlap of the Eq. (1) test would push with 64285.7 N; with sigma_c = 1 MPa the face
+  // Z x L = 0.05 x 0.2 m crushes at 1e6 * 0.01 = 10000 N.
+  const auto a = square({0.0, 0.0}, 0.2), b = square({0.199, 0.0}, 0.2);
+  const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
+  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const BodyState j = {{0.199, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  ContactConstants c = iceContact();
+  c.crushing_strength = 1e6;
+  EXPECT_NEAR(demContactForce(o, i, j, c, kNoReference).force_on_j.x, 10000.0, 1e-9 * 10000.0);
+  c.crushing_strength = 1e8;  // 1e6 N: above the elastic force, which then holds
+  EXPECT_NEAR(demContactForce(o, i, j, c, kNoReference).force_on_j.x, 9e8 / 0.7 * 0.05 * 1e-3, 1e-6 * 64285.7);
+}
+
+TEST(Contact, PieceRestingOnAnotherIsPushedOverItsVerticalOverlapOnly) {
+  // j 0.049 m above i: Z = 1 mm, K_n = 1 - 0.98 = 0.02. Shifted by 0.05 m along x the squares
+  // overlap by S = 0.15 x 0.2 m, S/L = 0.15 m, but the slabs are 1 mm apart vertically: the depth
+  // is Z, F_n = 0.02 (9e8/0.7) 1e-3 1e-3 = 25.714 N (it was 3857 N with S/L).
+  const auto a = square({0.0, 0.0}, 0.2), b = square({0.05, 0.0}, 0.2);
+  const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
+  ASSERT_NEAR(o.area / o.chord_length, 0.15, 1e-9);
+  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const BodyState j = {{0.05, 0.0}, 0.049, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const PairForce f = demContactForce(o, i, j, iceContact(), kNoReference);
+  const double k_n = 1.0 - 0.049 / 0.05;
+  EXPECT_NEAR(f.force_on_j.x, k_n * 9e8 / 0.7 * 1e-3 * 1e-3, 1e-6 * 25.714);
+  // Eq. (3) carries the piece: F_v = K_v Z (3E_v/(1-nu)) S / h, upwards on j.
+  EXPECT_NEAR(f.fz_on_j, k_n * 1e-3 * 9e8 / 0.7 * 0.03 / 0.05, 1e-6 * f.fz_on_j);
+}
+
+TEST(Contact, ANewPairCountsOnlyTheOverlapBeyondItsFirst) {
+  // A pair that enters the list overlapping by S0 (a bond broke) pushes with nothing at first,
+  // then with the overlap beyond S0; when the overlap shrinks, S_ref shrinks with it.
+  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const BodyState j = {{0.19, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const auto a = square({0.0, 0.0}, 0.2);
+  const auto deep = square({0.19, 0.0}, 0.2), deeper = square({0.189, 0.0}, 0.2), shallow = square({0.195, 0.0}, 0.2);
+  const PairForce first = demContactForce(intersectConvexPolygons(a.data(), 4, deep.data(), 4), i, j, iceContact(), -1.0);
+  EXPECT_TRUE(first.touching);
+  EXPECT_EQ(norm(first.force_on_j), 0.0);
+  const double grid_bound = 2e-9;  // [m^2] perimeters x grid step of the integer clip (polygon_clip.hpp)
+  EXPECT_NEAR(first.reference_area, 0.2 * 0.01, grid_bound);
+  // 1 mm deeper: F = (9e8/0.7) 0.05 1e-3 = 64285.7 N, as for a fresh 1 mm overlap.
+  const PairForce second =
+      demContactForce(intersectConvexPolygons(a.data(), 4, deeper.data(), 4), i, j, iceContact(), first.reference_area);
+  EXPECT_NEAR(second.force_on_j.x, 9e8 / 0.7 * 0.05 * 1e-3, 1e-5 * 64285.7);
+  const PairForce third =
+      demContactForce(intersectConvexPolygons(a.data(), 4, shallow.data(), 4), i, j, iceContact(), second.reference_area);
+  EXPECT_NEAR(third.reference_area, 0.2 * 0.005, grid_bound);
+  EXPECT_EQ(norm(third.force_on_j), 0.0);
+}
+
+TEST(Friction, ViscousBranchIsBoundedSoThatAnExplicitStepCannotReverseTheSlip) {
+  // mu N / v_reg = 0.3 * 1e4 / 1e-3 = 3e6 N s/m; with m_eff = 0.5 kg and dt = 5e-6 s an explicit
+  // step multiplies the slip by 1 - 3e6 * 5e-6 / 0.5 = -29: it grows. Bounded by beta m / dt:
+  const double mu = 0.3, normal = 1e4, v_reg = 1e-3, mass = 0.5, dt = 5e-6, beta = 0.5;
+  EXPECT_NEAR(frictionScale(mu, normal, 1e-4, 0.0, 0.0, v_reg, 1e300), 3e6, 1e-6);
+  EXPECT_NEAR(frictionScale(mu, normal, 1e-4, 0.0, 0.0, v_reg, beta * mass / dt), beta * mass / dt, 1e-9);
+  // Above v_reg the Coulomb branch is untouched while below the bound: 0.3 * 1e4 / 10 = 300.
+  EXPECT_NEAR(frictionScale(mu, normal, 10.0, 0.0, 0.0, v_reg, beta * mass / dt), 300.0, 1e-9);
+  // A body sliding on a plane at 1 mm/s: unbounded, the first step throws the slip to -29 mm/s
+  // and from then on it flips sign every step at mu N dt / m = 30 mm/s (a chatter that feeds
+  // the yaw of a piece in a pile); bounded, it decays without changing sign.
+  double unbounded = 1e-3, bounded = 1e-3, largest_unbounded = 0.0;
+  int sign_flips = 0;
+  for (int step = 0; step < 20; ++step) {
+    const double next_unbounded =
+        unbounded - frictionScale(mu, normal, unbounded, 0.0, 0.0, v_reg, 1e300) * unbounded * dt / mass;
+    sign_flips += (next_unbounded < 0.0) != (unbounded < 0.0) ? 1 : 0;
+    unbounded = next_unbounded;
+    largest_unbounded = std::max(largest_unbounded, std::fabs(unbounded));
+    const double next = bounded - frictionScale(mu, normal, bounded, 0.0, 0.0, v_reg, beta * mass / dt) * bounded * dt / mass;
+    EXPECT_GE(next, 0.0);
+    EXPECT_LT(next, bounded);
+    bounded = next;
+  }
+  EXPECT_EQ(sign_flips, 20);
+  EXPECT_GT(largest_unbounded, 20.0 * 1e-3);
+  EXPECT_LT(bounded, 1e-3 * std::pow(0.5, 19));  // each step keeps at most 1 - beta of the slip
 }
 
 constexpr Vec2 kNoTurn = {1.0, 0.0};  // (cos 0, sin 0)
@@ -159,8 +249,8 @@ TEST(Bond, PulledApartItBreaksAtTheFlexuralStrength) {
   const BondRest b = unitBond();
   const double u_fail = 100e3 * 0.05 * 0.2 / b.k_normal;
   for (const double factor : {0.99, 1.01}) {
-    const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
-    const BodyState j = {{0.2 + factor * u_fail, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
+    const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+    const BodyState j = {{0.2 + factor * u_fail, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
     const BondForce f = rmibBondForce(b, i, kNoTurn, j, kNoTurn, bondLaw(0.0, true));
     EXPECT_NEAR(f.sigma_h, factor * 100e3, 1e-6 * 100e3);
     EXPECT_NEAR(f.force_on_j.x, -b.k_normal * factor * u_fail, 1e-6);  // pulls j back
@@ -182,21 +272,34 @@ TEST(Bond, VerticalOffsetBreaksAtEquation13WithAndWithoutCompression) {
   // No compression: threshold sigma_f.
   for (const double factor : {0.99, 1.01}) {
     const double dz = offsetFor(factor * 100e3);
-    const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
-    const BodyState j = {{0.2, 0.0}, dz, {0, 0}, 0.0, 0.0, 1.84};
+    const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+    const BodyState j = {{0.2, 0.0}, dz, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
     EXPECT_EQ(rmibBondForce(b, i, kNoTurn, j, kNoTurn, bondLaw(0.5, true)).breaks, factor > 1.0);
   }
   // Compressed to sigma_c = 40 kPa with k = 0.5: threshold 100 - 20 = 80 kPa.
   const double squeeze = 40e3 * h * b.edge_length / b.k_normal;
   for (const double factor : {0.99, 1.01}) {
-    const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
+    const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
     // K_n also falls with the offset: compress a little more so that sigma_c is 40 kPa.
     const double dz = offsetFor(factor * 80e3);
-    const BodyState j = {{0.2 - squeeze / (1.0 - dz / h), 0.0}, dz, {0, 0}, 0.0, 0.0, 1.84};
+    const BodyState j = {{0.2 - squeeze / (1.0 - dz / h), 0.0}, dz, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
     const BondForce f = rmibBondForce(b, i, kNoTurn, j, kNoTurn, bondLaw(0.5, true));
     EXPECT_NEAR(f.sigma_c, 40e3, 1e-6 * 40e3);
     EXPECT_EQ(f.breaks, factor > 1.0) << "factor " << factor;
   }
+}
+
+TEST(Bond, TornThroughWhenTheCellsAreOffsetByTheWholeThickness) {
+  // With |dz| >= h, K_n = K_v = 0: no stress of Eq. (13) is left to break it, but the cells share
+  // no face any more; the bond breaks. Just below h, unstressed otherwise, it holds.
+  const BondRest b = unitBond();
+  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  BondConstants law = bondLaw(0.0, true);
+  law.flexural_strength = 1e12;  // only the offset can break it here
+  const BodyState level_with_h = {{0.2, 0.0}, 0.05, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const BodyState below_h = {{0.2, 0.0}, 0.0499, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  EXPECT_TRUE(rmibBondForce(b, i, kNoTurn, level_with_h, kNoTurn, law).breaks);
+  EXPECT_FALSE(rmibBondForce(b, i, kNoTurn, below_h, kNoTurn, law).breaks);
 }
 
 TEST(Bond, RigidTurnOfThePairGivesNoForce) {
@@ -208,14 +311,14 @@ TEST(Bond, RigidTurnOfThePairGivesNoForce) {
   const Vec2 anchor = {0.1, 0.0};
   const Vec2 ci = anchor + rotate(Vec2{-0.1, 0.0}, turn.x, turn.y);
   const Vec2 cj = anchor + rotate(Vec2{0.1, 0.0}, turn.x, turn.y);
-  const BodyState i = {ci, 0.0, {0, 0}, 0.0, 0.0, 1.84};
-  const BodyState j = {cj, 0.0, {0, 0}, 0.0, 0.0, 1.84};
+  const BodyState i = {ci, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const BodyState j = {cj, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
   const BondForce f = rmibBondForce(b, i, turn, j, turn, bondLaw(0.0, true));
   EXPECT_NEAR(norm(f.force_on_j), 0.0, 1e-9);
   // A relative turn of j alone by 0.01 rad about its centroid shears the bond: force along y.
   const Vec2 small = {std::cos(0.01), std::sin(0.01)};
-  const BodyState j0 = {{0.2, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
-  const BodyState i0 = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84};
+  const BodyState j0 = {{0.2, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const BodyState i0 = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
   const BondForce g = rmibBondForce(b, i0, kNoTurn, j0, small, bondLaw(0.0, true));
   // The anchor of j moves by -0.1 * (cos 0.01 - 1, sin 0.01) ~ (5e-6, -1e-3): shear pulls j up.
   EXPECT_GT(g.force_on_j.y, 0.9 * b.k_shear * 0.1 * std::sin(0.01));
@@ -266,8 +369,8 @@ TEST(PlaneContact, InclinedFaceVolumeByHandAndForceNormalToIt) {
   const double expected = 0.2 / std::tan(a) * 0.025 * 0.025 / 2.0;
   EXPECT_NEAR(p.volume, expected, 1e-12 * expected + 1e-18);
   // At rest, the force is K V / h along m: normal to the face, pushing the ice back and up.
-  const PlaneContactConstants law = {1.7e11, 0.05, 0.1, 0.2, 1e-3};
-  const PlaneContactForce f = planeContactForce(p, face, law, {0, 0}, {0, 0}, 0.0, 0.0, 1.84, 0.04, 0.0);
+  const PlaneContactConstants law = {1.7e11, 0.05, 0.1, 0.2, 1e-3, 0.5 / 4e-6};
+  const PlaneContactForce f = planeContactForce(p, face, law, {0, 0}, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia, 0.04, 0.0);
   const double magnitude = 1.7e11 * expected / 0.05;
   EXPECT_NEAR(f.fx, magnitude * face.mx, 1e-9 * magnitude);
   EXPECT_NEAR(f.fy, 0.0, 1e-9 * magnitude);

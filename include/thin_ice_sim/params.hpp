@@ -86,6 +86,7 @@ struct NumericsParams {
   double rebuild_displacement = 0.1;      ///< rebuild when a cell moved this x l-bar [-]
   double rebuild_rotation_deg = 2.0;      ///< ... or turned this much [deg] (delta_rot)
   double friction_regularisation = 1e-3;  ///< [m/s] slip speed below which friction is viscous
+  double friction_viscous_limit = 0.5;    ///< beta [-]: viscous friction <= beta m_eff / dt (stable for < 2)
   int threads = 0;                  ///< OpenMP threads on the CPU; 0 = all cores from 2000 cells up, one below
 };
 

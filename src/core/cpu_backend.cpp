@@ -147,7 +147,7 @@ class CpuBackend final : public Backend {
  private:
   BodyState body(int k) const {
     const CellMotion& m = motion_[k];
-    return {{m.x, m.y}, m.z, {m.vx, m.vy}, m.vz, m.wz, model_.mass[k]};
+    return {{m.x, m.y}, m.z, {m.vx, m.vy}, m.vz, m.wz, model_.mass[k], model_.inertia[k]};
   }
 
   /// Candidate pairs within the search radius that are not held by an intact bond.
@@ -156,8 +156,15 @@ class CpuBackend final : public Backend {
     std::vector<Vec2> centres(n);
     for (int k = 0; k < n; ++k) centres[k] = {motion_[k].x, motion_[k].y};
     const std::vector<CandidatePair>& candidates = search_.findPairs(centres, model_.constants.search_radius);
+    // The pairs come sorted by (i, j); the pairs that stay keep their reference overlap S_ref,
+    // a new pair gets -1: its overlap at its first step becomes S_ref (contact.hpp).
+    previous_i_.swap(contact_i_);
+    previous_j_.swap(contact_j_);
+    previous_reference_.swap(contact_reference_);
     contact_i_.clear();
     contact_j_.clear();
+    contact_reference_.clear();
+    size_t cursor = 0;
     const double margin = model_.constants.search_margin;
     for (const CandidatePair& p : candidates) {
       // Bounding circles (radius r + margin) that miss cannot touch before the next rebuild.
@@ -165,8 +172,14 @@ class CpuBackend final : public Backend {
       const double dx = centres[p.j].x - centres[p.i].x, dy = centres[p.j].y - centres[p.i].y;
       if (dx * dx + dy * dy > reach * reach) continue;
       if (hasIntactBond(p.i, p.j)) continue;
+      while (cursor < previous_i_.size() &&
+             (previous_i_[cursor] < p.i || (previous_i_[cursor] == p.i && previous_j_[cursor] < p.j))) {
+        ++cursor;
+      }
+      const bool kept = cursor < previous_i_.size() && previous_i_[cursor] == p.i && previous_j_[cursor] == p.j;
       contact_i_.push_back(p.i);
       contact_j_.push_back(p.j);
+      contact_reference_.push_back(kept ? previous_reference_[cursor] : -1.0);
     }
     contact_force_.resize(contact_i_.size());
     contact_incidence_.build(n, contact_i_, contact_j_);
@@ -236,12 +249,14 @@ class CpuBackend final : public Backend {
       const double* bj = &box_[4 * j];
       if (bi[1] <= bj[0] || bj[1] <= bi[0] || bi[3] <= bj[2] || bj[3] <= bi[2]) {
         f.touching = false;
+        contact_reference_[p] = 0.0;
         continue;
       }
       const PolygonOverlap overlap = intersectConvexPolygons(
           &world_[static_cast<size_t>(i) * kV], model_.vertex_count[i], &world_[static_cast<size_t>(j) * kV],
           model_.vertex_count[j]);
-      f = demContactForce(overlap, body(i), body(j), model_.constants.contact);
+      f = demContactForce(overlap, body(i), body(j), model_.constants.contact, contact_reference_[p]);
+      contact_reference_[p] = f.reference_area;
       touching += f.touching ? 1 : 0;
     }
     last_contacts_ = touching;
@@ -260,7 +275,7 @@ class CpuBackend final : public Backend {
     auto apply = [&](const SlabPenetration& pen, const RigidPlane& plane, const PlaneContactConstants& law,
                      double plane_vx) {
       const PlaneContactForce f = planeContactForce(pen, plane, law, centre, velocity, m.vz, m.wz, model_.mass[k],
-                                                    model_.area[k], plane_vx);
+                                                    model_.inertia[k], model_.area[k], plane_vx);
       fx += f.fx; fy += f.fy; fz += f.fz;
       tz += cross(f.point - centre, Vec2{f.fx, f.fy});
       return f;
@@ -422,7 +437,10 @@ class CpuBackend final : public Backend {
   std::vector<BondForce> bond_force_;
   Incidence bond_incidence_, contact_incidence_;
   FixedRadiusNeighbourSearch search_;
-  std::vector<int> contact_i_, contact_j_;
+  std::vector<int> contact_i_, contact_j_;  ///< sorted by (i, j)
+  std::vector<double> contact_reference_;   ///< S_ref of each pair [m^2] (contact.hpp), -1: new
+  std::vector<int> previous_i_, previous_j_;
+  std::vector<double> previous_reference_;
   std::vector<PairForce> contact_force_;
   int broken_count_ = 0;
   int last_contacts_ = 0;

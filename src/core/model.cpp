@@ -15,6 +15,7 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
   const IceParams& ice = p.ice;
   const double h = ice.thickness;
   const double regularisation = p.numerics.friction_regularisation;
+  const double rate_limit = p.numerics.friction_viscous_limit / p.numerics.time_step;  // [1/s]
   ModelConstants c{};
   c.contact = {h,
                3.0 * ice.youngs_modulus / (1.0 - ice.poisson_ratio),
@@ -22,6 +23,8 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
                ice.smoothing_exponent_h,
                ice.smoothing_exponent_v,
                ice.friction_ice_ice,
+               rate_limit,
+               ice.compressive_strength,
                ice.contact_damping_ratio,
                regularisation};
   c.bond = {h,
@@ -33,10 +36,10 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
             ice.vertical_stress == VerticalStressModel::kBending};
   c.water = {p.water.density,       p.water.gravity,        h, p.water.linear_drag,
              p.water.quadratic_drag, p.water.vertical_linear_drag, p.water.vertical_quadratic_drag};
-  c.structure = {p.structure.stiffness, h, p.structure.friction, ice.contact_damping_ratio, regularisation};
-  c.pusher = {p.pusher.stiffness, h, 0.0, ice.contact_damping_ratio, regularisation};
-  c.bottom = {p.bottom.stiffness, h, p.bottom.friction, ice.contact_damping_ratio, regularisation};
-  c.wall = {p.channel.stiffness, h, p.channel.friction, ice.contact_damping_ratio, regularisation};
+  c.structure = {p.structure.stiffness, h, p.structure.friction, ice.contact_damping_ratio, regularisation, rate_limit};
+  c.pusher = {p.pusher.stiffness, h, 0.0, ice.contact_damping_ratio, regularisation, rate_limit};
+  c.bottom = {p.bottom.stiffness, h, p.bottom.friction, ice.contact_damping_ratio, regularisation, rate_limit};
+  c.wall = {p.channel.stiffness, h, p.channel.friction, ice.contact_damping_ratio, regularisation, rate_limit};
 
   // Face through (toe_x, 0, 0) rising towards +x at the given angle; outward normal towards the
   // ice: m = (-sin a, 0, cos a).

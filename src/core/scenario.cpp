@@ -236,6 +236,7 @@ const std::vector<Section>& sections() {
         number(&P::numerics, &NumericsParams::rebuild_displacement, "rebuild_displacement"),
         number(&P::numerics, &NumericsParams::rebuild_rotation_deg, "rebuild_rotation_deg"),
         number(&P::numerics, &NumericsParams::friction_regularisation, "friction_regularisation"),
+        number(&P::numerics, &NumericsParams::friction_viscous_limit, "friction_viscous_limit"),
         integer(&P::numerics, &NumericsParams::threads, "threads")}},
   };
   return table;
@@ -484,6 +485,9 @@ void checkParams(const Params& p) {
           "numerics.rebuild_rotation_deg", n.rebuild_rotation_deg,
           "delta_rot must be a small positive angle", "(0, 45] deg");
   positive("numerics.friction_regularisation", n.friction_regularisation, "a slip speed", " m/s");
+  require(n.friction_viscous_limit > 0.0 && n.friction_viscous_limit < 2.0, "numerics.friction_viscous_limit",
+          n.friction_viscous_limit, "an explicit step of viscous friction is stable below 2 m_eff/dt",
+          "(0, 2)");
   require(n.threads >= 0, "numerics.threads", n.threads, "a thread count cannot be negative",
           "integer >= 0 (0 = all cores)");
   checkSheet(p);

@@ -66,9 +66,12 @@ TIS_HD double verticalBondStress(double vertical_force, const BondRest& b, const
   return fabs(vertical_force) / (h * b.edge_length);
 }
 
-/// Eq. (13) with the pure-compression limit of SPEC-NOTES.
-TIS_HD bool bondFails(double sigma_h, double sigma_v, double sigma_c, const BondConstants& c) {
-  return sigma_h > c.flexural_strength ||
+/// Eq. (13) with the pure-compression limit of SPEC-NOTES, and torn through when the cells are
+/// offset vertically by the whole thickness (|dz| >= h: no face left in common; K_n = K_v = 0
+/// there, so Eq. (13) alone would keep such a bond, carrying shear, for ever).
+TIS_HD bool bondFails(double sigma_h, double sigma_v, double sigma_c, double vertical_offset,
+                      const BondConstants& c) {
+  return fabs(vertical_offset) >= c.thickness || sigma_h > c.flexural_strength ||
          sigma_v > c.flexural_strength - c.compression_coupling * sigma_c ||
          sigma_c > c.compressive_strength;
 }
@@ -113,7 +116,7 @@ TIS_HD BondForce rmibBondForce(const BondRest& b, const BodyState& i, Vec2 turn_
   f.sigma_h = elastic_h / section;
   f.sigma_c = elastic_h < 0.0 ? -elastic_h / section : 0.0;
   f.sigma_v = verticalBondStress(elastic_v, b, c);
-  f.breaks = bondFails(f.sigma_h, f.sigma_v, f.sigma_c, c);
+  f.breaks = bondFails(f.sigma_h, f.sigma_v, f.sigma_c, dz, c);
   return f;
 }
 

@@ -1,14 +1,24 @@
 // Dynamic (DEM) contact between two cells whose polygons overlap, paper Eqs. (1)-(4) read as
 // SPEC-NOTES fixes them:
-//   F_n = K_n(z) (3E/(1-nu)) Z S/L        Eq. (1) x h^3 with the face height h replaced by the
-//                                         vertical overlap Z (= h for level cells): S/L is the mean
-//                                         overlap depth, so this is a planar contact of stiffness
-//                                         (3E/(1-nu)) Z per metre
+//   F_n = K_n(z) (3E/(1-nu)) Z d          Eq. (1) x h^3 with the face height h replaced by the
+//                                         vertical overlap Z (= h for level cells) and the depth
+//                                         d = min(S/L, Z): S/L is the mean overlap depth, so this
+//                                         is a planar contact of stiffness (3E/(1-nu)) Z per metre
 //   F_v = K_v(z) Z (3E_v/(1-nu)) S/h       Eq. (3), Z = max(0, h - |z_j - z_i|) (Eq. 2), pushing
 //                                         the cells apart vertically (zero when level)
 //   both act at the overlap centroid; the yaw moment is (point - centroid) x F (Eq. 4).
 // Added, as every DEM needs: normal damping (ratio zeta of critical, never attractive) and
 // regularised Coulomb friction against the slip at the contact point.
+// Three departures, each forced by a blow-up traced to it (docs/model.md, "Deviations"):
+//  - d = min(S/L, Z): two slabs that overlap by S/L across and by Z up and down are separated
+//    along the shallower of the two. A piece resting on another (Z ~ 1 mm, S/L ~ 0.1 m) used to
+//    get a horizontal push of 1e4 N.
+//  - A reference overlap S_ref: a pair that enters the contact list already overlapping (a bond
+//    that broke after its cells had hinged into each other about the bond's anchor) counts only
+//    the overlap beyond S_ref, and S_ref shrinks with the overlap. It used to start at 1e6 N.
+//  - The viscous part of the regularised friction is bounded by beta m_eff / dt (m_eff: the
+//    effective mass of the slip at the contact point, rotation included), the largest that the
+//    explicit step integrates without overshoot; above it the friction spun pieces up.
 #pragma once
 
 #include <math.h>
@@ -28,6 +38,8 @@ struct ContactConstants {
   double exponent_h;            ///< n of K_n [-]
   double exponent_v;            ///< n of K_v [-]
   double friction;              ///< mu ice-ice [-]
+  double friction_rate_limit;   ///< beta / dt [1/s]: friction scale <= this x m_eff
+  double crushing_strength;     ///< sigma_c [Pa]: F_n <= sigma_c Z L
   double damping_ratio;         ///< zeta [-]
   double regularisation_speed;  ///< [m/s]
 };
@@ -40,6 +52,7 @@ struct BodyState {
   double vz;       ///< [m/s]
   double wz;       ///< [rad/s]
   double mass;     ///< [kg]
+  double inertia;  ///< yaw moment of inertia [kg m^2]
 };
 
 /// Velocity [m/s] of the material point `point` of a body (horizontal part).
@@ -51,19 +64,31 @@ struct PairForce {
   Vec2 force_on_j;    ///< [N] horizontal force on j; i gets the opposite
   double fz_on_j;     ///< [N] vertical force on j; i gets the opposite
   Vec2 point;         ///< [m] where it acts (for the yaw moments of Eq. 4)
+  double reference_area;  ///< S_ref [m^2] after this step, carried to the next
   bool touching;      ///< S > 0
 };
 
+/// Inverse effective mass [1/kg] of a slip at `point` of body b: 1/m + |r|^2/I (an upper bound
+/// of the exact 1/m + (r x t)^2/I for any slip direction t).
+TIS_HD double inverseSlipMass(const BodyState& b, Vec2 point) {
+  const Vec2 r = point - b.centroid;
+  return 1.0 / b.mass + dot(r, r) / b.inertia;
+}
+
 /// Force between cells i and j from their polygon overlap (`overlap` = intersection of i's and
-/// j's polygons, normal from i to j).
+/// j's polygons, normal from i to j). `reference_area` is the pair's S_ref from the previous step,
+/// or negative for a pair new to the contact list (its present overlap becomes S_ref).
 TIS_HD PairForce demContactForce(const PolygonOverlap& overlap, const BodyState& i, const BodyState& j,
-                                 const ContactConstants& c) {
+                                 const ContactConstants& c, double reference_area) {
   PairForce f;
   f.force_on_j = {0.0, 0.0};
   f.fz_on_j = 0.0;
   f.point = overlap.centroid;
   f.touching = overlap.area > 0.0;
+  f.reference_area = 0.0;  // apart: the next touch starts from no overlap
   if (!f.touching) return f;
+  f.reference_area = reference_area < 0.0 ? overlap.area : fmin(reference_area, overlap.area);
+  const double area = overlap.area - f.reference_area;  // S - S_ref >= 0 [m^2]
 
   const double h = c.thickness;
   const double dz = j.z - i.z;
@@ -77,17 +102,17 @@ TIS_HD PairForce demContactForce(const PolygonOverlap& overlap, const BodyState&
   const double approach = dot(relative, n);  // > 0: separating
 
   // Eq. (1) x h^3 with the contact face h high replaced by the vertical overlap Z of Eq. (2):
-  // two slabs at different heights touch over Z, not h (equal at dz = 0). Without it a piece
-  // resting on another (|dz| just below h, overlap S the size of a cell) got a horizontal kick of
-  // order 1e5 N and blew up (docs/model.md). Damping of stiffness k = K_n E' Z.
+  // two slabs at different heights touch over Z, not h (equal at dz = 0); the depth is the
+  // shallower of S/L and Z. Damping of stiffness k = K_n E' Z.
   const double overlap_z = fmax(0.0, h - fabs(dz));
   const double stiffness_h = k_h * c.plane_modulus * overlap_z;
-  double normal = stiffness_h * overlap.area / overlap.chord_length;
+  const double depth = fmin(area / overlap.chord_length, overlap_z);
+  double normal = stiffness_h * depth;
   normal -= 2.0 * c.damping_ratio * sqrt(stiffness_h * reduced_mass) * approach;
-  if (normal < 0.0) normal = 0.0;
+  normal = fmin(fmax(normal, 0.0), c.crushing_strength * overlap_z * overlap.chord_length);
 
   // Eqs. (2)-(3), with damping of stiffness K_v E_v' S / h.
-  const double stiffness_v = k_v * c.vertical_modulus * overlap.area / h;
+  const double stiffness_v = k_v * c.vertical_modulus * area / h;
   const double side = dz > 0.0 ? 1.0 : (dz < 0.0 ? -1.0 : 0.0);
   double vertical = stiffness_v * overlap_z;
   if (side != 0.0) {
@@ -100,8 +125,9 @@ TIS_HD PairForce demContactForce(const PolygonOverlap& overlap, const BodyState&
   // Friction against the slip: relative velocity less its component along n.
   const Vec2 slip = relative - approach * n;
   const double slip_z = j.vz - i.vz;
+  const double slip_mass = 1.0 / (inverseSlipMass(i, overlap.centroid) + inverseSlipMass(j, overlap.centroid));
   const double scale = frictionScale(c.friction, normal + vertical, slip.x, slip.y, side != 0.0 ? 0.0 : slip_z,
-                                     c.regularisation_speed);
+                                     c.regularisation_speed, c.friction_rate_limit * slip_mass);
   f.force_on_j = normal * n - scale * slip;
   f.fz_on_j = side * vertical - (side != 0.0 ? 0.0 : scale * slip_z);
   return f;

@@ -148,6 +148,7 @@ struct PlaneContactConstants {
   double friction;              ///< mu [-]
   double damping_ratio;         ///< zeta [-], of the stiffness K * sqrt(cell area)
   double regularisation_speed;  ///< [m/s]
+  double friction_rate_limit;   ///< beta / dt [1/s]: friction scale <= this x m_eff (friction.hpp)
 };
 
 struct PlaneContactForce {
@@ -157,11 +158,11 @@ struct PlaneContactForce {
 };
 
 /// Force of the plane on a cell from its penetration (see the file comment). `centroid`,
-/// `velocity`, `vz`, `wz`, `mass`, `area` describe the cell; `plane_velocity` is the plane's own
-/// velocity (the pusher moves; walls do not).
+/// `velocity`, `vz`, `wz`, `mass`, `inertia` (yaw), `area` describe the cell; `plane_velocity`
+/// is the plane's own velocity (the pusher moves; walls do not).
 TIS_HD PlaneContactForce planeContactForce(const SlabPenetration& pen, const RigidPlane& plane,
                                            const PlaneContactConstants& c, Vec2 centroid, Vec2 velocity,
-                                           double vz, double wz, double mass, double area,
+                                           double vz, double wz, double mass, double inertia, double area,
                                            double plane_velocity_x) {
   PlaneContactForce f;
   f.fx = f.fy = f.fz = 0.0;
@@ -176,7 +177,10 @@ TIS_HD PlaneContactForce planeContactForce(const SlabPenetration& pen, const Rig
   normal -= 2.0 * c.damping_ratio * sqrt(stiffness * mass) * approach;
   if (normal < 0.0) normal = 0.0;
   const double sx = rx - approach * plane.mx, sy = ry - approach * plane.my, sz = rz - approach * plane.mz;
-  const double scale = frictionScale(c.friction, normal, sx, sy, sz, c.regularisation_speed);
+  const Vec2 arm = pen.centroid - centroid;
+  const double slip_mass = 1.0 / (1.0 / mass + dot(arm, arm) / inertia);  // as inverseSlipMass
+  const double scale = frictionScale(c.friction, normal, sx, sy, sz, c.regularisation_speed,
+                                     c.friction_rate_limit * slip_mass);
   f.fx = normal * plane.mx - scale * sx;
   f.fy = normal * plane.my - scale * sy;
   f.fz = normal * plane.mz - scale * sz;
