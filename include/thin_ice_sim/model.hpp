@@ -7,46 +7,13 @@
 #include "thin_ice_sim/ice_sheet.hpp"
 #include "thin_ice_sim/params.hpp"
 #include "thin_ice_sim/physics/bond.hpp"
+#include "thin_ice_sim/physics/cell_forces.hpp"
 #include "thin_ice_sim/physics/contact.hpp"
 #include "thin_ice_sim/physics/integrate.hpp"
 #include "thin_ice_sim/physics/plane_contact.hpp"
 #include "thin_ice_sim/physics/water.hpp"
 
 namespace thin_ice {
-
-/// A cell may touch at most this many structure panels at once (checked by buildModel).
-constexpr int kMaxPanelsPerCell = 4;
-
-/// Constants of every law, precomputed from Params (all SI).
-struct ModelConstants {
-  ContactConstants contact;
-  BondConstants bond;
-  WaterConstants water;
-  PlaneContactConstants structure;
-  PlaneContactConstants pusher;
-  PlaneContactConstants bottom;
-  PlaneContactConstants wall;
-  RigidPlane structure_face;       ///< the inclined face (outward normal towards the ice)
-  double structure_top_z;          ///< [m] top of the face
-  double structure_toe_x;          ///< [m] origin of the structure frame (the toe on the waterline)
-  double structure_y_min;          ///< [m] first panel's left edge
-  double panel_width;              ///< [m]
-  int panels;
-  double calibration_factor;       ///< alpha, Eq. (18)
-  bool bottom_enabled;
-  double bottom_x_start;           ///< [m] the false bottom covers x >= this
-  double bottom_z;                 ///< [m] its height (negative)
-  bool walls_enabled;
-  double wall_half_width;          ///< [m] walls at y = +-this
-  double wall_x_start;             ///< [m] walls from this x on (side panels only: toe - length)
-  double time_step;                ///< dt [s]
-  double mean_edge_length;         ///< l-bar [m] of Algorithm 1
-  double rebuild_displacement;     ///< [m] rebuild when a cell moved farther since the last one
-  double rebuild_rotation;         ///< [rad] ... or turned more
-  int max_steps_between_rebuilds;  ///< N_iter
-  double search_radius;            ///< [m] centroid distance under which a pair may be a candidate
-  double search_margin;            ///< [m] a pair is a candidate when |c_i - c_j| <= r_i + r_j + this
-};
 
 struct Model {
   int cell_count = 0;

@@ -30,12 +30,6 @@ constexpr int kMinCellsForThreads = 2000;
 /// A cell faster than this has blown up [m/s] (the pusher moves at centimetres per second).
 constexpr double kRunawaySpeed = 50.0;
 
-struct StructureContact {
-  int first_panel;
-  int panel_count;
-  double fx[kMaxPanelsPerCell], fy[kMaxPanelsPerCell], fz[kMaxPanelsPerCell];  ///< on the structure [N]
-  double px[kMaxPanelsPerCell], py[kMaxPanelsPerCell], pz[kMaxPanelsPerCell];  ///< where it acts [m]
-};
 
 /// Index lists: for each cell, the entries (pair index, side) of the pairs it belongs to.
 struct Incidence {
@@ -200,18 +194,9 @@ class CpuBackend final : public Backend {
     const int n = model_.cell_count;
 #pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_)
     for (int k = 0; k < n; ++k) {
-      const CellMotion& m = motion_[k];
-      const double cs = std::cos(m.yaw), sn = std::sin(m.yaw);
-      turn_[k] = {cs, sn};
-      double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-      for (int v = 0; v < model_.vertex_count[k]; ++v) {
-        const Vec2 offset = {model_.vertex_x[k * kV + v], model_.vertex_y[k * kV + v]};
-        const Vec2 w = Vec2{m.x, m.y} + rotate(offset, cs, sn);
-        world_[static_cast<size_t>(k) * kV + v] = w;
-        x0 = std::min(x0, w.x); x1 = std::max(x1, w.x);
-        y0 = std::min(y0, w.y); y1 = std::max(y1, w.y);
-      }
-      box_[4 * k] = x0; box_[4 * k + 1] = x1; box_[4 * k + 2] = y0; box_[4 * k + 3] = y1;
+      turn_[k] = placeCell(motion_[k], &model_.vertex_x[static_cast<size_t>(k) * kV],
+                           &model_.vertex_y[static_cast<size_t>(k) * kV], model_.vertex_count[k],
+                           &world_[static_cast<size_t>(k) * kV], &box_[4 * k]);
     }
   }
 
@@ -262,83 +247,6 @@ class CpuBackend final : public Backend {
     last_contacts_ = touching;
   }
 
-  /// Forces of the rigid planes on cell k; the structure's share is kept per panel.
-  void addPlaneForces(int k, double pusher_velocity, double& fx, double& fy, double& fz, double& tz) {
-    const ModelConstants& c = model_.constants;
-    const CellMotion& m = motion_[k];
-    const Vec2* poly = &world_[static_cast<size_t>(k) * kV];
-    const int n = model_.vertex_count[k];
-    const double h = c.contact.thickness;
-    const double z_low = m.z - 0.5 * h, z_high = m.z + 0.5 * h;
-    const double* box = &box_[4 * k];
-    const Vec2 centre = {m.x, m.y}, velocity = {m.vx, m.vy};
-    auto apply = [&](const SlabPenetration& pen, const RigidPlane& plane, const PlaneContactConstants& law,
-                     double plane_vx) {
-      const PlaneContactForce f = planeContactForce(pen, plane, law, centre, velocity, m.vz, m.wz, model_.mass[k],
-                                                    model_.inertia[k], model_.area[k], plane_vx);
-      fx += f.fx; fy += f.fy; fz += f.fz;
-      tz += cross(f.point - centre, Vec2{f.fx, f.fy});
-      return f;
-    };
-
-    // Pusher: solid x < pusher_x, outward normal +x.
-    pusher_fx_[k] = 0.0;
-    if (box[0] < pusher_x_) {
-      const RigidPlane plate = {1.0, 0.0, 0.0, pusher_x_};
-      pusher_fx_[k] = apply(slabPenetration(poly, n, z_low, z_high, plate), plate, c.pusher, pusher_velocity).fx;
-    }
-    // Basin walls (or the structure's side panels): solid |y| > half width, for x >= wall_x_start
-    // (only the part of the cell beyond that x meets a side panel).
-    if (c.walls_enabled && box[1] > c.wall_x_start &&
-        (box[3] > c.wall_half_width || box[2] < -c.wall_half_width)) {
-      Vec2 part[kV + 1];
-      const bool whole = box[0] >= c.wall_x_start;
-      const int count = whole ? n : clipPolygonByHalfPlane(poly, n, -1.0, 0.0, -c.wall_x_start, part);
-      const Vec2* reach = whole ? poly : part;
-      if (box[3] > c.wall_half_width) {
-        const RigidPlane wall = {0.0, -1.0, 0.0, -c.wall_half_width};
-        apply(slabPenetration(reach, count, z_low, z_high, wall), wall, c.wall, 0.0);
-      }
-      if (box[2] < -c.wall_half_width) {
-        const RigidPlane wall = {0.0, 1.0, 0.0, -c.wall_half_width};
-        apply(slabPenetration(reach, count, z_low, z_high, wall), wall, c.wall, 0.0);
-      }
-    }
-    // False bottom: solid z < bottom_z for x >= bottom_x_start.
-    if (c.bottom_enabled && z_low < c.bottom_z && box[1] > c.bottom_x_start) {
-      Vec2 part[kV + 1];
-      const int count = clipPolygonByHalfPlane(poly, n, -1.0, 0.0, -c.bottom_x_start, part);
-      const RigidPlane floor = {0.0, 0.0, 1.0, c.bottom_z};
-      apply(slabPenetration(part, count, z_low, z_high, floor), floor, c.bottom, 0.0);
-    }
-    // Structure face, panel by panel: the face spans z up to its top and y over the panels.
-    StructureContact& s = structure_[k];
-    s.panel_count = 0;
-    const RigidPlane& face = c.structure_face;
-    // The slab reaches the solid when the least value of m . p over it is below the offset
-    // (m_x < 0, m_z > 0: the rightmost x and the lowest z give the least value).
-    const double lowest = face.mx * box[1] + face.mz * z_low;
-    if (lowest < face.offset && z_low < c.structure_top_z) {
-      const double y_end = c.structure_y_min + c.panels * c.panel_width;
-      const int first = std::max(0, static_cast<int>(std::floor((box[2] - c.structure_y_min) / c.panel_width)));
-      const int last = std::min(c.panels - 1, static_cast<int>(std::floor((box[3] - c.structure_y_min) / c.panel_width)));
-      if (box[3] > c.structure_y_min && box[2] < y_end && first <= last) {
-        s.first_panel = first;
-        for (int p = first; p <= last && s.panel_count < kMaxPanelsPerCell; ++p) {
-          const double y0 = c.structure_y_min + p * c.panel_width, y1 = y0 + c.panel_width;
-          Vec2 strip_a[kMaxSlabVertices], strip[kMaxSlabVertices];  // n + 1, then n + 2 vertices
-          const int na = clipPolygonByHalfPlane(poly, n, 0.0, -1.0, -y0, strip_a);
-          const int nb = na >= 3 ? clipPolygonByHalfPlane(strip_a, na, 0.0, 1.0, y1, strip) : 0;
-          const SlabPenetration pen = slabPenetration(strip, nb, z_low, std::min(z_high, c.structure_top_z), face);
-          const PlaneContactForce f = apply(pen, face, c.structure, 0.0);
-          const int slot = s.panel_count++;
-          s.fx[slot] = -f.fx; s.fy[slot] = -f.fy; s.fz[slot] = -f.fz;
-          s.px[slot] = pen.centroid.x; s.py[slot] = pen.centroid.y; s.pz[slot] = pen.z;
-        }
-      }
-    }
-  }
-
   void stepOnce(double pusher_velocity, LoadSample& sum) {
     const ModelConstants& c = model_.constants;
     const int n = model_.cell_count;
@@ -347,42 +255,20 @@ class CpuBackend final : public Backend {
     computeBondForces();
     computeContactForces();
     bool blown = false, moved_far = false;
-    const double limit2 = c.rebuild_displacement * c.rebuild_displacement;
+    const CellStepInputs in = {model_.mass.data(),          model_.inertia.data(),
+                               model_.area.data(),          model_.vertex_count.data(),
+                               world_.data(),               box_.data(),
+                               bond_incidence_.offsets.data(), bond_incidence_.entries.data(),
+                               bond_broken_.data(),         bond_force_.data(),
+                               contact_incidence_.offsets.data(), contact_incidence_.entries.data(),
+                               contact_force_.data()};
 #pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_) reduction(|| : blown, moved_far)
     for (int k = 0; k < n; ++k) {
-      const CellMotion& m = motion_[k];
-      const Vec2 centre = {m.x, m.y};
-      double fx = 0.0, fy = 0.0, fz = 0.0, tz = 0.0;
-      for (int e = bond_incidence_.offsets[k]; e < bond_incidence_.offsets[k + 1]; ++e) {
-        const int b = bond_incidence_.entries[e] >> 1;
-        if (bond_broken_[b] && !bond_force_[b].breaks) continue;
-        const BondForce& f = bond_force_[b];
-        const double sign = (bond_incidence_.entries[e] & 1) ? 1.0 : -1.0;
-        const Vec2 force = sign * f.force_on_j;
-        fx += force.x; fy += force.y; fz += sign * f.fz_on_j;
-        tz += cross((bond_incidence_.entries[e] & 1) ? f.arm_j : f.arm_i, force);
-      }
-      for (int e = contact_incidence_.offsets[k]; e < contact_incidence_.offsets[k + 1]; ++e) {
-        const PairForce& f = contact_force_[contact_incidence_.entries[e] >> 1];
-        if (!f.touching) continue;
-        const double sign = (contact_incidence_.entries[e] & 1) ? 1.0 : -1.0;
-        const Vec2 force = sign * f.force_on_j;
-        fx += force.x; fy += force.y; fz += sign * f.fz_on_j;
-        tz += cross(f.point - centre, force);
-      }
-      const WaterForce w = waterForce(c.water, model_.mass[k], model_.area[k],
-                                      model_.inertia[k] / (model_.mass[k] / model_.area[k]), m.z,
-                                      {m.vx, m.vy}, m.vz, m.wz);
-      fx += w.horizontal.x; fy += w.horizontal.y; fz += w.vertical; tz += w.torque;
-      addPlaneForces(k, pusher_velocity, fx, fy, fz, tz);
-      integrateSymplecticEuler(motion_[k], fx, fy, fz, tz, 1.0 / model_.mass[k], 1.0 / model_.inertia[k], dt);
-      const CellMotion& after = motion_[k];
-      const double speed2 = after.vx * after.vx + after.vy * after.vy + after.vz * after.vz;
-      blown = blown || !std::isfinite(after.x + after.y + after.z + after.yaw) || !(speed2 < kRunawaySpeed * kRunawaySpeed);
-      // Algorithm 1, lines 14-16: moved or turned too far since the last rebuild?
-      const double dx = after.x - reference_[k].x, dy = after.y - reference_[k].y;
-      moved_far = moved_far || dx * dx + dy * dy > limit2 ||
-                  std::fabs(after.yaw - reference_[k].yaw) > c.rebuild_rotation;
+      const CellStepResult r =
+          stepCell(k, c, in, pusher_x_, pusher_velocity, kRunawaySpeed, reference_[k], motion_[k], structure_[k]);
+      pusher_fx_[k] = r.pusher_fx;
+      blown = blown || r.blown;
+      moved_far = moved_far || r.moved_far;
     }
     if (moved_far || steps_since_rebuild_ + 1 >= c.max_steps_between_rebuilds) rebuild_requested_ = true;
     // Bonds broken in this step have applied their last force: they stop here.

@@ -1,0 +1,227 @@
+// Everything that happens to one cell in one step, after the pair forces are known: the bond
+// and contact forces gathered in a fixed order, water (Eq. 16), the rigid planes (pusher, basin
+// walls, false bottom, the structure face panel by panel, Eq. 17) and symplectic Euler
+// (Eqs. 14-15). One definition, called per cell by the CPU backend's loop and by the CUDA
+// backend's kernel, on the same plain arrays, so both do the same arithmetic in the same order.
+#pragma once
+
+#include <math.h>
+
+#include "thin_ice_sim/physics/bond.hpp"
+#include "thin_ice_sim/physics/contact.hpp"
+#include "thin_ice_sim/physics/host_device.hpp"
+#include "thin_ice_sim/physics/integrate.hpp"
+#include "thin_ice_sim/physics/plane_contact.hpp"
+#include "thin_ice_sim/physics/water.hpp"
+
+namespace thin_ice {
+
+/// A cell may touch at most this many structure panels at once (checked by buildModel).
+constexpr int kMaxPanelsPerCell = 4;
+
+/// Constants of every law, precomputed from Params (all SI).
+struct ModelConstants {
+  ContactConstants contact;
+  BondConstants bond;
+  WaterConstants water;
+  PlaneContactConstants structure;
+  PlaneContactConstants pusher;
+  PlaneContactConstants bottom;
+  PlaneContactConstants wall;
+  RigidPlane structure_face;       ///< the inclined face (outward normal towards the ice)
+  double structure_top_z;          ///< [m] top of the face
+  double structure_toe_x;          ///< [m] origin of the structure frame (the toe on the waterline)
+  double structure_y_min;          ///< [m] first panel's left edge
+  double panel_width;              ///< [m]
+  int panels;
+  double calibration_factor;       ///< alpha, Eq. (18)
+  bool bottom_enabled;
+  double bottom_x_start;           ///< [m] the false bottom covers x >= this
+  double bottom_z;                 ///< [m] its height (negative)
+  bool walls_enabled;
+  double wall_half_width;          ///< [m] walls at y = +-this
+  double wall_x_start;             ///< [m] walls from this x on (side panels only: toe - length)
+  double time_step;                ///< dt [s]
+  double mean_edge_length;         ///< l-bar [m] of Algorithm 1
+  double rebuild_displacement;     ///< [m] rebuild when a cell moved farther since the last one
+  double rebuild_rotation;         ///< [rad] ... or turned more
+  int max_steps_between_rebuilds;  ///< N_iter
+  double search_radius;            ///< [m] centroid distance under which a pair may be a candidate
+  double search_margin;            ///< [m] a pair is a candidate when |c_i - c_j| <= r_i + r_j + this
+};
+
+/// The structure's share of one cell's plane forces, per panel it touches (on the structure).
+struct StructureContact {
+  int first_panel;
+  int panel_count;
+  double fx[kMaxPanelsPerCell], fy[kMaxPanelsPerCell], fz[kMaxPanelsPerCell];  ///< [N]
+  double px[kMaxPanelsPerCell], py[kMaxPanelsPerCell], pz[kMaxPanelsPerCell];  ///< where it acts [m]
+};
+
+/// Read-only view of the fixed model and the pair data a cell's update needs (device or host
+/// pointers; incidence lists: for cell k, entries offsets[k] .. offsets[k+1]-1, each
+/// 2 x pair + 1 when the cell is the pair's j).
+struct CellStepInputs {
+  const double* mass;                 ///< (cells) [kg]
+  const double* inertia;              ///< (cells) [kg m^2]
+  const double* area;                 ///< (cells) [m^2]
+  const int* vertex_count;            ///< (cells)
+  const Vec2* world;                  ///< (cells x kMaxPolygonVertices) world vertices [m]
+  const double* box;                  ///< (cells x 4) x0 x1 y0 y1 [m]
+  const int* bond_offsets;            ///< (cells + 1)
+  const int* bond_entries;
+  const unsigned char* bond_broken;   ///< (bonds)
+  const BondForce* bond_force;        ///< (bonds)
+  const int* contact_offsets;         ///< (cells + 1)
+  const int* contact_entries;
+  const PairForce* contact_force;     ///< (pairs)
+};
+
+/// What one cell's update reports.
+struct CellStepResult {
+  double pusher_fx;  ///< [N] force of the pusher on the cell, +x
+  bool blown;        ///< non-finite state or faster than runaway_speed
+  bool moved_far;    ///< Algorithm 1, lines 14-16: moved or turned too far since the last rebuild
+};
+
+/// Adds the force of a plane on the cell to (fx, fy, fz, tz) and returns it.
+TIS_HD PlaneContactForce addPlaneContact(const SlabPenetration& pen, const RigidPlane& plane,
+                                         const PlaneContactConstants& law, const CellMotion& m, double mass,
+                                         double inertia, double area, double plane_vx, double& fx, double& fy,
+                                         double& fz, double& tz) {
+  const Vec2 centre = {m.x, m.y};
+  const PlaneContactForce f =
+      planeContactForce(pen, plane, law, centre, {m.vx, m.vy}, m.vz, m.wz, mass, inertia, area, plane_vx);
+  fx += f.fx; fy += f.fy; fz += f.fz;
+  tz += cross(f.point - centre, Vec2{f.fx, f.fy});
+  return f;
+}
+
+/// Forces of the rigid planes on a cell (world polygon `poly` of n vertices, bounding box `box`);
+/// the structure's share is written per panel to `s`. Returns the pusher's x force [N].
+TIS_HD double addRigidPlaneForces(const ModelConstants& c, const Vec2* poly, int n, const double* box,
+                                  const CellMotion& m, double mass, double inertia, double area,
+                                  double pusher_x, double pusher_velocity, StructureContact& s, double& fx,
+                                  double& fy, double& fz, double& tz) {
+  const double h = c.contact.thickness;
+  const double z_low = m.z - 0.5 * h, z_high = m.z + 0.5 * h;
+  double pusher_fx = 0.0;
+  // Pusher: solid x < pusher_x, outward normal +x.
+  if (box[0] < pusher_x) {
+    const RigidPlane plate = {1.0, 0.0, 0.0, pusher_x};
+    pusher_fx = addPlaneContact(slabPenetration(poly, n, z_low, z_high, plate), plate, c.pusher, m, mass, inertia,
+                                area, pusher_velocity, fx, fy, fz, tz).fx;
+  }
+  // Basin walls (or the structure's side panels): solid |y| > half width, for x >= wall_x_start
+  // (only the part of the cell beyond that x meets a side panel).
+  if (c.walls_enabled && box[1] > c.wall_x_start && (box[3] > c.wall_half_width || box[2] < -c.wall_half_width)) {
+    Vec2 part[kMaxPolygonVertices + 1];
+    const bool whole = box[0] >= c.wall_x_start;
+    const int count = whole ? n : clipPolygonByHalfPlane(poly, n, -1.0, 0.0, -c.wall_x_start, part);
+    const Vec2* reach = whole ? poly : part;
+    if (box[3] > c.wall_half_width) {
+      const RigidPlane wall = {0.0, -1.0, 0.0, -c.wall_half_width};
+      addPlaneContact(slabPenetration(reach, count, z_low, z_high, wall), wall, c.wall, m, mass, inertia, area, 0.0,
+                      fx, fy, fz, tz);
+    }
+    if (box[2] < -c.wall_half_width) {
+      const RigidPlane wall = {0.0, 1.0, 0.0, -c.wall_half_width};
+      addPlaneContact(slabPenetration(reach, count, z_low, z_high, wall), wall, c.wall, m, mass, inertia, area, 0.0,
+                      fx, fy, fz, tz);
+    }
+  }
+  // False bottom: solid z < bottom_z for x >= bottom_x_start.
+  if (c.bottom_enabled && z_low < c.bottom_z && box[1] > c.bottom_x_start) {
+    Vec2 part[kMaxPolygonVertices + 1];
+    const int count = clipPolygonByHalfPlane(poly, n, -1.0, 0.0, -c.bottom_x_start, part);
+    const RigidPlane floor = {0.0, 0.0, 1.0, c.bottom_z};
+    addPlaneContact(slabPenetration(part, count, z_low, z_high, floor), floor, c.bottom, m, mass, inertia, area, 0.0,
+                    fx, fy, fz, tz);
+  }
+  // Structure face, panel by panel: the face spans z up to its top and y over the panels.
+  s.first_panel = 0;
+  s.panel_count = 0;
+  const RigidPlane& face = c.structure_face;
+  // The slab reaches the solid when the least value of m . p over it is below the offset
+  // (m_x < 0, m_z > 0: the rightmost x and the lowest z give the least value).
+  const double lowest = face.mx * box[1] + face.mz * z_low;
+  if (lowest < face.offset && z_low < c.structure_top_z) {
+    const double y_end = c.structure_y_min + c.panels * c.panel_width;
+    const int first = (int)fmax(0.0, floor((box[2] - c.structure_y_min) / c.panel_width));
+    const int last = (int)fmin((double)(c.panels - 1), floor((box[3] - c.structure_y_min) / c.panel_width));
+    if (box[3] > c.structure_y_min && box[2] < y_end && first <= last) {
+      s.first_panel = first;
+      for (int p = first; p <= last && s.panel_count < kMaxPanelsPerCell; ++p) {
+        const double y0 = c.structure_y_min + p * c.panel_width, y1 = y0 + c.panel_width;
+        Vec2 strip_a[kMaxSlabVertices], strip[kMaxSlabVertices];  // n + 1, then n + 2 vertices
+        const int na = clipPolygonByHalfPlane(poly, n, 0.0, -1.0, -y0, strip_a);
+        const int nb = na >= 3 ? clipPolygonByHalfPlane(strip_a, na, 0.0, 1.0, y1, strip) : 0;
+        const SlabPenetration pen = slabPenetration(strip, nb, z_low, fmin(z_high, c.structure_top_z), face);
+        const PlaneContactForce f = addPlaneContact(pen, face, c.structure, m, mass, inertia, area, 0.0, fx, fy, fz, tz);
+        const int slot = s.panel_count++;
+        s.fx[slot] = -f.fx; s.fy[slot] = -f.fy; s.fz[slot] = -f.fz;
+        s.px[slot] = pen.centroid.x; s.py[slot] = pen.centroid.y; s.pz[slot] = pen.z;
+      }
+    }
+  }
+  return pusher_fx;
+}
+
+/// One step of cell k: gather, water, planes, symplectic Euler. `motion` is updated in place;
+/// `reference` is its state at the last contact rebuild.
+TIS_HD CellStepResult stepCell(int k, const ModelConstants& c, const CellStepInputs& in, double pusher_x,
+                               double pusher_velocity, double runaway_speed, const CellMotion& reference,
+                               CellMotion& motion, StructureContact& structure) {
+  const CellMotion m = motion;
+  const Vec2 centre = {m.x, m.y};
+  double fx = 0.0, fy = 0.0, fz = 0.0, tz = 0.0;
+  for (int e = in.bond_offsets[k]; e < in.bond_offsets[k + 1]; ++e) {
+    const int b = in.bond_entries[e] >> 1;
+    const BondForce& f = in.bond_force[b];
+    if (in.bond_broken[b] && !f.breaks) continue;  // a bond that broke in this step still acts
+    const bool is_j = (in.bond_entries[e] & 1) != 0;
+    const double sign = is_j ? 1.0 : -1.0;
+    const Vec2 force = sign * f.force_on_j;
+    fx += force.x; fy += force.y; fz += sign * f.fz_on_j;
+    tz += cross(is_j ? f.arm_j : f.arm_i, force);
+  }
+  for (int e = in.contact_offsets[k]; e < in.contact_offsets[k + 1]; ++e) {
+    const PairForce& f = in.contact_force[in.contact_entries[e] >> 1];
+    if (!f.touching) continue;
+    const double sign = (in.contact_entries[e] & 1) ? 1.0 : -1.0;
+    const Vec2 force = sign * f.force_on_j;
+    fx += force.x; fy += force.y; fz += sign * f.fz_on_j;
+    tz += cross(f.point - centre, force);
+  }
+  const double mass = in.mass[k], inertia = in.inertia[k], area = in.area[k];
+  const WaterForce w = waterForce(c.water, mass, area, inertia / (mass / area), m.z, {m.vx, m.vy}, m.vz, m.wz);
+  fx += w.horizontal.x; fy += w.horizontal.y; fz += w.vertical; tz += w.torque;
+  CellStepResult r;
+  r.pusher_fx = addRigidPlaneForces(c, in.world + (size_t)k * kMaxPolygonVertices, in.vertex_count[k], in.box + 4 * k,
+                                    m, mass, inertia, area, pusher_x, pusher_velocity, structure, fx, fy, fz, tz);
+  integrateSymplecticEuler(motion, fx, fy, fz, tz, 1.0 / mass, 1.0 / inertia, c.time_step);
+  const CellMotion& a = motion;
+  const double speed2 = a.vx * a.vx + a.vy * a.vy + a.vz * a.vz;
+  r.blown = !isfinite(a.x + a.y + a.z + a.yaw) || !(speed2 < runaway_speed * runaway_speed);
+  const double dx = a.x - reference.x, dy = a.y - reference.y;
+  r.moved_far = dx * dx + dy * dy > c.rebuild_displacement * c.rebuild_displacement ||
+                fabs(a.yaw - reference.yaw) > c.rebuild_rotation;
+  return r;
+}
+
+/// World vertices and bounding box (x0 x1 y0 y1) of a cell at pose `m`; returns (cos, sin) yaw.
+TIS_HD Vec2 placeCell(const CellMotion& m, const double* vertex_x, const double* vertex_y, int count, Vec2* world,
+                      double* box) {
+  const double cs = cos(m.yaw), sn = sin(m.yaw);
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (int v = 0; v < count; ++v) {
+    const Vec2 w = Vec2{m.x, m.y} + rotate(Vec2{vertex_x[v], vertex_y[v]}, cs, sn);
+    world[v] = w;
+    x0 = fmin(x0, w.x); x1 = fmax(x1, w.x);
+    y0 = fmin(y0, w.y); y1 = fmax(y1, w.y);
+  }
+  box[0] = x0; box[1] = x1; box[2] = y0; box[3] = y1;
+  return {cs, sn};
+}
+
+}  // namespace thin_ice
