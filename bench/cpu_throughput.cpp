@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "thin_ice_sim/built_backends.hpp"
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/simulation.hpp"
 
@@ -43,6 +44,7 @@ std::vector<std::string> sheetOverrides(const thin_ice::Params& p, long cells, b
 }  // namespace
 
 int main(int argc, char** argv) {
+  thin_ice::registerBuiltBackends();
   std::string scenario_path;
   std::vector<long> sizes;
   std::vector<int> threads;

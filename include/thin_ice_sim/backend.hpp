@@ -2,6 +2,7 @@
 // upload the model, step(n), download cells, read loads.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -27,5 +28,18 @@ class Backend {
   /// Empty while healthy; else what went wrong (non-finite state, runaway speed).
   virtual std::string healthError() const = 0;
 };
+
+/// How Simulation reaches the GPU backend without the core depending on CUDA: a build with the
+/// CUDA library registers this provider (thin_ice_sim/built_backends.hpp); without it there is none.
+struct GpuBackendProvider {
+  /// Empty when a usable device is present, else why not (no device, driver too old...).
+  std::string (*unavailable_reason)();
+  /// One line naming the device ("NVIDIA H100 80GB HBM3, compute capability 9.0").
+  std::string (*device_description)();
+  std::unique_ptr<Backend> (*make)(const Model& model);
+};
+
+void setGpuBackendProvider(const GpuBackendProvider* provider);
+const GpuBackendProvider* gpuBackendProvider();
 
 }  // namespace thin_ice

@@ -17,6 +17,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "thin_ice_sim/incidence.hpp"
 #include "thin_ice_sim/neighbour_search.hpp"
 
 namespace thin_ice {
@@ -27,30 +28,7 @@ constexpr int kV = kMaxPolygonVertices;
 /// microseconds, more than a small scene's whole step (measured: a 20-cell strip ran 10x slower
 /// on two threads than on one).
 constexpr int kMinCellsForThreads = 2000;
-/// A cell faster than this has blown up [m/s] (the pusher moves at centimetres per second).
-constexpr double kRunawaySpeed = 50.0;
 
-
-/// Index lists: for each cell, the entries (pair index, side) of the pairs it belongs to.
-struct Incidence {
-  std::vector<int> offsets;  ///< (cells + 1)
-  std::vector<int> entries;  ///< 2 * pair + (1 if the cell is j else 0)
-
-  void build(int cells, const std::vector<int>& first, const std::vector<int>& second) {
-    offsets.assign(cells + 1, 0);
-    for (size_t p = 0; p < first.size(); ++p) {
-      ++offsets[first[p] + 1];
-      ++offsets[second[p] + 1];
-    }
-    for (int c = 0; c < cells; ++c) offsets[c + 1] += offsets[c];
-    entries.assign(offsets[cells], 0);
-    std::vector<int> cursor(offsets.begin(), offsets.end() - 1);
-    for (size_t p = 0; p < first.size(); ++p) {  // pair order: each cell's list is sorted
-      entries[cursor[first[p]]++] = 2 * static_cast<int>(p);
-      entries[cursor[second[p]]++] = 2 * static_cast<int>(p) + 1;
-    }
-  }
-};
 
 class CpuBackend final : public Backend {
  public:
@@ -279,22 +257,17 @@ class CpuBackend final : public Backend {
       sum.pusher_force += pusher_fx_[k];
       const StructureContact& s = structure_[k];
       for (int slot = 0; slot < s.panel_count; ++slot) {
-        const int p = s.first_panel + slot;
-        sum.panel_horizontal[p] += s.fx[slot];
-        sum.panel_lateral[p] += s.fy[slot];
-        sum.panel_vertical[p] += s.fz[slot];
-        sum.horizontal_raw += s.fx[slot];
-        sum.lateral_raw += s.fy[slot];
-        sum.vertical_raw += s.fz[slot];
-        // Moments r x F about the structure origin (toe, 0, 0) and about the panel's centre.
-        const double rx = s.px[slot] - c.structure_toe_x, ry = s.py[slot], rz = s.pz[slot];
-        const double ry_panel = ry - (c.structure_y_min + (p + 0.5) * c.panel_width);
-        sum.torque.x += ry * s.fz[slot] - rz * s.fy[slot];
-        sum.torque.y += rz * s.fx[slot] - rx * s.fz[slot];
-        sum.torque.z += rx * s.fy[slot] - ry * s.fx[slot];
-        sum.panel_torque[p].x += ry_panel * s.fz[slot] - rz * s.fy[slot];
-        sum.panel_torque[p].y += rz * s.fx[slot] - rx * s.fz[slot];
-        sum.panel_torque[p].z += rx * s.fy[slot] - ry_panel * s.fx[slot];
+        const SlotLoad l = structureSlotLoad(c, s, slot);
+        sum.panel_horizontal[l.panel] += l.fx;
+        sum.panel_lateral[l.panel] += l.fy;
+        sum.panel_vertical[l.panel] += l.fz;
+        sum.horizontal_raw += l.fx;
+        sum.lateral_raw += l.fy;
+        sum.vertical_raw += l.fz;
+        sum.torque.x += l.tx; sum.torque.y += l.ty; sum.torque.z += l.tz;
+        sum.panel_torque[l.panel].x += l.panel_tx;
+        sum.panel_torque[l.panel].y += l.panel_ty;
+        sum.panel_torque[l.panel].z += l.panel_tz;
       }
     }
     pusher_x_ += pusher_velocity * dt;

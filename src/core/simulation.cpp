@@ -16,18 +16,34 @@ BackendKind parseBackendKind(const std::string& text, const std::string& key) {
   throw std::invalid_argument(key + " = '" + text + "': allowed values are 'cpu', 'cuda' and 'auto'");
 }
 
+namespace {
+const GpuBackendProvider* g_gpu_provider = nullptr;
+}  // namespace
+
+void setGpuBackendProvider(const GpuBackendProvider* provider) { g_gpu_provider = provider; }
+const GpuBackendProvider* gpuBackendProvider() { return g_gpu_provider; }
+
 Simulation::Simulation(const Scenario& scenario, BackendKind backend) : scenario_(scenario) {
   const Params& p = scenario_.params;
   validateParams(p, scenario_.source.empty() ? scenario_.name : scenario_.source);
-  if (backend == BackendKind::kCuda) {
-    throw std::runtime_error(
-        "backend 'cuda' is not available: this build has no CUDA simulation backend yet; use 'cpu' or 'auto'");
+  // Which backend, decided before any work so that a refused 'cuda' costs nothing.
+  const GpuBackendProvider* gpu = gpuBackendProvider();
+  const std::string gpu_missing = gpu == nullptr ? "this build has no CUDA backend (nvcc was not found when it was built)"
+                                                 : gpu->unavailable_reason();
+  if (backend == BackendKind::kCuda && !gpu_missing.empty()) {
+    throw std::runtime_error("backend 'cuda' is not available: " + gpu_missing + "; use 'cpu' or 'auto'");
   }
+  const bool use_gpu = backend != BackendKind::kCpu && gpu_missing.empty();
   sheet_ = generateIceSheet(p.sheet);
   model_ = std::make_unique<Model>(buildModel(p, sheet_, scenario_.source.empty() ? scenario_.name : scenario_.source));
-  backend_ = makeCpuBackend(*model_, p.numerics.threads);
-  backend_note_ = backend == BackendKind::kAuto ? "backend auto: no CUDA simulation backend in this build, using the CPU"
-                                                : "backend cpu";
+  if (use_gpu) {
+    backend_ = gpu->make(*model_);
+    backend_note_ = "backend " + std::string(backend == BackendKind::kAuto ? "auto: using the GPU, " : "cuda: ") +
+                    gpu->device_description();
+  } else {
+    backend_ = makeCpuBackend(*model_, p.numerics.threads);
+    backend_note_ = backend == BackendKind::kAuto ? "backend auto: " + gpu_missing + ", using the CPU" : "backend cpu";
+  }
   pusher_velocity_ = p.pusher.velocity;
 }
 

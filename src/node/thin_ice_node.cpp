@@ -5,8 +5,10 @@
 #include <exception>
 
 #include "sim_node.hpp"
+#include "thin_ice_sim/built_backends.hpp"
 
 int main(int argc, char** argv) {
+  thin_ice::registerBuiltBackends();
   ros::init(argc, argv, "thin_ice_sim");
   try {
     thin_ice::SimNode node(ros::NodeHandle(), ros::NodeHandle("~"));

@@ -26,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "thin_ice_sim/built_backends.hpp"
 #include "thin_ice_sim/load_statistics.hpp"
 #include "thin_ice_sim/rubble_profiles.hpp"
 #include "thin_ice_sim/scenario.hpp"
@@ -419,6 +420,7 @@ std::unique_ptr<Simulation> prepare(const Options& o) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  thin_ice::registerBuiltBackends();
   const Clock::time_point setup_start = Clock::now();
   Options options;
   std::unique_ptr<Simulation> sim;

@@ -50,6 +50,9 @@ struct ModelConstants {
   double search_margin;            ///< [m] a pair is a candidate when |c_i - c_j| <= r_i + r_j + this
 };
 
+/// A cell faster than this has blown up [m/s] (the pusher moves at centimetres per second).
+constexpr double kRunawaySpeed = 50.0;
+
 /// The structure's share of one cell's plane forces, per panel it touches (on the structure).
 struct StructureContact {
   int first_panel;
@@ -207,6 +210,30 @@ TIS_HD CellStepResult stepCell(int k, const ModelConstants& c, const CellStepInp
   r.moved_far = dx * dx + dy * dy > c.rebuild_displacement * c.rebuild_displacement ||
                 fabs(a.yaw - reference.yaw) > c.rebuild_rotation;
   return r;
+}
+
+/// Load of one structure slot of a cell: the force on the structure [N] and its moments [N m]
+/// about the structure frame's origin (toe, 0, 0) and about the panel's centre on the waterline.
+struct SlotLoad {
+  int panel;
+  double fx, fy, fz;
+  double tx, ty, tz;
+  double panel_tx, panel_ty, panel_tz;
+};
+
+TIS_HD SlotLoad structureSlotLoad(const ModelConstants& c, const StructureContact& s, int slot) {
+  SlotLoad l;
+  l.panel = s.first_panel + slot;
+  l.fx = s.fx[slot]; l.fy = s.fy[slot]; l.fz = s.fz[slot];
+  const double rx = s.px[slot] - c.structure_toe_x, ry = s.py[slot], rz = s.pz[slot];
+  const double ry_panel = ry - (c.structure_y_min + (l.panel + 0.5) * c.panel_width);
+  l.tx = ry * l.fz - rz * l.fy;
+  l.ty = rz * l.fx - rx * l.fz;
+  l.tz = rx * l.fy - ry * l.fx;
+  l.panel_tx = ry_panel * l.fz - rz * l.fy;
+  l.panel_ty = rz * l.fx - rx * l.fz;
+  l.panel_tz = rx * l.fy - ry_panel * l.fx;
+  return l;
 }
 
 /// World vertices and bounding box (x0 x1 y0 y1) of a cell at pose `m`; returns (cos, sin) yaw.
