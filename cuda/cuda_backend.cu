@@ -487,18 +487,7 @@ class CudaBackend final : public Backend {
   std::string healthError() const override { return health_error_; }
 
   std::vector<CellSnapshot> cells() const override {
-    const std::vector<CellMotion> motion = motion_.download();
-    const std::vector<unsigned char> broken = bond_broken_.download();
-    std::vector<unsigned char> bonded(n_, 0);
-    for (size_t b = 0; b < broken.size(); ++b) {
-      if (!broken[b]) bonded[model_.bond_i[b]] = bonded[model_.bond_j[b]] = 1;
-    }
-    std::vector<CellSnapshot> out(n_);
-    for (int k = 0; k < n_; ++k) {
-      const CellMotion& m = motion[k];
-      out[k] = {m.x, m.y, m.z, m.yaw, m.vx, m.vy, m.vz, m.wz, bonded[k] != 0};
-    }
-    return out;
+    return makeCellSnapshots(model_, motion_.download(), bond_broken_.download());
   }
 
  private:

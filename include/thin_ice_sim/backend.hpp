@@ -29,6 +29,11 @@ class Backend {
   virtual std::string healthError() const = 0;
 };
 
+/// Cell snapshots from a backend's state: cell k is in the intact sheet while any of its bonds
+/// holds (bond_broken: one flag per bond of the model).
+std::vector<CellSnapshot> makeCellSnapshots(const Model& model, const std::vector<CellMotion>& motion,
+                                            const std::vector<unsigned char>& bond_broken);
+
 /// How Simulation reaches the GPU backend without the core depending on CUDA: a build with the
 /// CUDA library registers this provider (thin_ice_sim/built_backends.hpp); without it there is none.
 struct GpuBackendProvider {

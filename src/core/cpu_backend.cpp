@@ -104,16 +104,7 @@ class CpuBackend final : public Backend {
   std::string healthError() const override { return health_error_; }
 
   std::vector<CellSnapshot> cells() const override {
-    std::vector<CellSnapshot> out(model_.cell_count);
-    std::vector<unsigned char> bonded(model_.cell_count, 0);
-    for (size_t b = 0; b < bond_broken_.size(); ++b) {
-      if (!bond_broken_[b]) bonded[model_.bond_i[b]] = bonded[model_.bond_j[b]] = 1;
-    }
-    for (int k = 0; k < model_.cell_count; ++k) {
-      const CellMotion& m = motion_[k];
-      out[k] = {m.x, m.y, m.z, m.yaw, m.vx, m.vy, m.vz, m.wz, bonded[k] != 0};
-    }
-    return out;
+    return makeCellSnapshots(model_, motion_, bond_broken_);
   }
 
  private:

@@ -16,6 +16,20 @@ BackendKind parseBackendKind(const std::string& text, const std::string& key) {
   throw std::invalid_argument(key + " = '" + text + "': allowed values are 'cpu', 'cuda' and 'auto'");
 }
 
+std::vector<CellSnapshot> makeCellSnapshots(const Model& model, const std::vector<CellMotion>& motion,
+                                            const std::vector<unsigned char>& bond_broken) {
+  std::vector<unsigned char> bonded(model.cell_count, 0);
+  for (size_t b = 0; b < bond_broken.size(); ++b) {
+    if (!bond_broken[b]) bonded[model.bond_i[b]] = bonded[model.bond_j[b]] = 1;
+  }
+  std::vector<CellSnapshot> out(model.cell_count);
+  for (int k = 0; k < model.cell_count; ++k) {
+    const CellMotion& m = motion[k];
+    out[k] = {m.x, m.y, m.z, m.yaw, m.vx, m.vy, m.vz, m.wz, bonded[k] != 0};
+  }
+  return out;
+}
+
 namespace {
 const GpuBackendProvider* g_gpu_provider = nullptr;
 }  // namespace
