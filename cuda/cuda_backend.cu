@@ -12,11 +12,7 @@
 // rebuild is due, or a cell blew up) does nothing, so the host, which looks at the flags after
 // each batch, rebuilds before the next step exactly as the CPU backend does.
 //
-// The contact rebuild stays on the device (no host round trip but the pair count): cells are
-// hashed to bins of the search radius, sorted by bin with cub, each cell counts and then writes
-// its neighbours j > i (sorted by j, so the list is sorted by (i, j) as on the CPU), a pair keeps
-// the reference overlap S_ref it had in the old list (binary search), and the per-cell incidence
-// lists are built and sorted into pair order, so the gather sums in the CPU's order.
+// The contact rebuild stays on the device (contact_list.cuh): only the pair count comes back.
 //
 // Precision: the state is double, as on the CPU; the polygon intersection works on an integer
 // grid laid over each pair (polygon_clip.hpp), so it is exact and order-independent on both.
@@ -24,7 +20,6 @@
 // but their last bits may differ from run to run (the CPU sums in cell order).
 #include "cuda_backend.hpp"
 
-#include <cub/cub.cuh>
 #include <cuda_runtime.h>
 
 #include <algorithm>
@@ -34,7 +29,9 @@
 #include <string>
 #include <vector>
 
+#include "contact_list.cuh"
 #include "cuda_check.hpp"
+#include "device_array.cuh"
 #include "device_info.cuh"
 #include "thin_ice_sim/backend.hpp"
 #include "thin_ice_sim/incidence.hpp"
@@ -46,7 +43,6 @@ namespace cuda {
 namespace {
 
 constexpr int kV = kMaxPolygonVertices;
-constexpr int kThreads = 128;      ///< threads per block: the polygon kernels keep ~1 kB on the stack
 constexpr int kBatchSteps = 32;    ///< steps per captured graph (flags are read after each batch)
 constexpr int kStopRebuild = 1;    ///< flag bits
 constexpr int kStopBlown = 2;
@@ -67,42 +63,6 @@ struct RunScalars {
   int last_touching;        ///< ... in the last step taken
   int pair_count;           ///< candidate pairs in the list
 };
-
-template <class T>
-class DeviceArray {
- public:
-  DeviceArray() = default;
-  DeviceArray(const DeviceArray&) = delete;
-  DeviceArray& operator=(const DeviceArray&) = delete;
-  ~DeviceArray() { if (data_ != nullptr) cudaFree(data_); }
-  /// Room for `count` elements; when it must grow, the contents are dropped.
-  void resize(size_t count) {
-    if (count <= capacity_) { size_ = count; return; }
-    if (data_ != nullptr) TIS_CUDA_CHECK(cudaFree(data_));
-    data_ = nullptr;
-    TIS_CUDA_CHECK(cudaMalloc(&data_, std::max<size_t>(count, 1) * sizeof(T)));
-    capacity_ = std::max<size_t>(count, 1);
-    size_ = count;
-  }
-  void upload(const std::vector<T>& host) {
-    resize(host.size());
-    if (!host.empty()) TIS_CUDA_CHECK(cudaMemcpy(data_, host.data(), host.size() * sizeof(T), cudaMemcpyHostToDevice));
-  }
-  std::vector<T> download() const {
-    std::vector<T> host(size_);
-    if (size_ > 0) TIS_CUDA_CHECK(cudaMemcpy(host.data(), data_, size_ * sizeof(T), cudaMemcpyDeviceToHost));
-    return host;
-  }
-  T* get() const { return data_; }
-  size_t size() const { return size_; }
-  size_t bytes() const { return capacity_ * sizeof(T); }
-
- private:
-  T* data_ = nullptr;
-  size_t size_ = 0, capacity_ = 0;
-};
-
-int blocksFor(long long count) { return static_cast<int>(std::max<long long>(1, (count + kThreads - 1) / kThreads)); }
 
 // --- The step ---------------------------------------------------------------------------------
 
@@ -187,6 +147,14 @@ __global__ void stepCells(int n, RunScalars* run, ModelConstants c, CellStepInpu
   }
 }
 
+/// The run's scalars after a contact rebuild: the new pair count, no flags, counting anew.
+__global__ void startAfterRebuild(RunScalars* run, int pair_count) {
+  run->pair_count = pair_count;
+  run->flags = 0;
+  run->stop = 0;
+  run->steps_since_rebuild = 0;
+}
+
 __global__ void finishStep(RunScalars* run, double time_step, int max_steps_between_rebuilds) {
   if (run->stop) return;
   run->pusher_x += run->pusher_velocity * time_step;
@@ -203,170 +171,12 @@ __global__ void finishStep(RunScalars* run, double time_step, int max_steps_betw
   if (run->flags != 0) run->stop = 1;
 }
 
-// --- The contact rebuild ----------------------------------------------------------------------
-
-/// Bin coordinates of a point for bins of side `bin` [m].
-__device__ void binOf(const CellMotion& m, double bin, long long& bx, long long& by) {
-  bx = (long long)floor(m.x / bin);
-  by = (long long)floor(m.y / bin);
-}
-
-__device__ unsigned int hashBin(long long bx, long long by, unsigned int table_mask) {
-  return (static_cast<unsigned int>(bx * 73856093LL) ^ static_cast<unsigned int>(by * 19349663LL)) & table_mask;
-}
-
-__global__ void hashCells(int n, const CellMotion* motion, double bin, unsigned int table_mask, unsigned int* keys,
-                          int* cells) {
-  const int k = blockIdx.x * blockDim.x + threadIdx.x;
-  if (k >= n) return;
-  long long bx, by;
-  binOf(motion[k], bin, bx, by);
-  keys[k] = hashBin(bx, by, table_mask);
-  cells[k] = k;
-}
-
-__global__ void binBounds(int n, const unsigned int* sorted_keys, int* bin_start, int* bin_end) {
-  const int s = blockIdx.x * blockDim.x + threadIdx.x;
-  if (s >= n) return;
-  const unsigned int key = sorted_keys[s];
-  if (s == 0 || sorted_keys[s - 1] != key) bin_start[key] = s;
-  if (s == n - 1 || sorted_keys[s + 1] != key) bin_end[key] = s + 1;
-}
-
-struct RebuildView {
-  int n;
-  const CellMotion* motion;
-  const double* radius;
-  double search_radius, margin, bin;
-  unsigned int table_mask;
-  const int* bin_start;
-  const int* bin_end;
-  const int* sorted_cells;
-  const int* bond_offsets;
-  const int* bond_entries;
-  const int* bond_i;
-  const int* bond_j;
-  const unsigned char* bond_broken;
-};
-
-/// Calls visit(j) for every j > i that is a contact candidate of i: centroids within the search
-/// radius and bounding circles (radius + margin) that meet, and no intact bond between them
-/// (the CPU's rebuildContacts()). Bins that hash alike are visited once.
-template <class Visit>
-__device__ void forEachCandidate(const RebuildView& v, int i, Visit visit) {
-  const CellMotion& a = v.motion[i];
-  long long bx, by;
-  binOf(a, v.bin, bx, by);
-  unsigned int seen[9];
-  int seen_count = 0;
-  for (int dy = -1; dy <= 1; ++dy) {
-    for (int dx = -1; dx <= 1; ++dx) {
-      const unsigned int key = hashBin(bx + dx, by + dy, v.table_mask);
-      bool repeated = false;
-      for (int s = 0; s < seen_count; ++s) repeated = repeated || seen[s] == key;
-      if (repeated) continue;
-      seen[seen_count++] = key;
-      const int begin = v.bin_start[key], end = v.bin_end[key];
-      for (int s = begin; s < end; ++s) {
-        const int j = v.sorted_cells[s];
-        if (j <= i) continue;
-        const double ex = v.motion[j].x - a.x, ey = v.motion[j].y - a.y;
-        const double d2 = ex * ex + ey * ey;
-        if (d2 > v.search_radius * v.search_radius) continue;
-        const double reach = v.radius[i] + v.radius[j] + v.margin;
-        if (d2 > reach * reach) continue;
-        bool bonded = false;
-        for (int e = v.bond_offsets[i]; e < v.bond_offsets[i + 1] && !bonded; ++e) {
-          const int b = v.bond_entries[e] >> 1;
-          bonded = !v.bond_broken[b] && (v.bond_i[b] == j || v.bond_j[b] == j);
-        }
-        if (!bonded) visit(j);
-      }
-    }
-  }
-}
-
-__global__ void countCandidates(RebuildView v, int* count) {
-  const int i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (i >= v.n) return;
-  int c = 0;
-  forEachCandidate(v, i, [&](int) { ++c; });
-  count[i] = c;
-}
-
-__global__ void writeCandidates(RebuildView v, const int* offsets, int* pair_i, int* pair_j) {
-  const int i = blockIdx.x * blockDim.x + threadIdx.x;
-  if (i >= v.n) return;
-  const int begin = offsets[i];
-  int c = 0;
-  forEachCandidate(v, i, [&](int j) {
-    pair_i[begin + c] = i;
-    pair_j[begin + c] = j;
-    ++c;
-  });
-  for (int a = begin + 1; a < begin + c; ++a) {  // insertion sort by j: the list is sorted by (i, j)
-    const int key = pair_j[a];
-    int b = a - 1;
-    while (b >= begin && pair_j[b] > key) {
-      pair_j[b + 1] = pair_j[b];
-      --b;
-    }
-    pair_j[b + 1] = key;
-  }
-}
-
-/// S_ref of each new pair: the old list's value when the pair was there, else -1 (new).
-__global__ void carryReferences(int pairs, const int* pair_i, const int* pair_j, int old_count, const int* old_i,
-                                const int* old_j, const double* old_reference, double* reference) {
-  const int p = blockIdx.x * blockDim.x + threadIdx.x;
-  if (p >= pairs) return;
-  const int i = pair_i[p], j = pair_j[p];
-  int lo = 0, hi = old_count;  // first old entry not below (i, j)
-  while (lo < hi) {
-    const int mid = (lo + hi) / 2;
-    if (old_i[mid] < i || (old_i[mid] == i && old_j[mid] < j)) lo = mid + 1;
-    else hi = mid;
-  }
-  reference[p] = (lo < old_count && old_i[lo] == i && old_j[lo] == j) ? old_reference[lo] : -1.0;
-}
-
-__global__ void countIncidence(int pairs, const int* pair_i, const int* pair_j, int* count) {
-  const int p = blockIdx.x * blockDim.x + threadIdx.x;
-  if (p >= pairs) return;
-  atomicAdd(&count[pair_i[p]], 1);
-  atomicAdd(&count[pair_j[p]], 1);
-}
-
-__global__ void writeIncidence(int pairs, const int* pair_i, const int* pair_j, const int* offsets, int* cursor,
-                               int* entries) {
-  const int p = blockIdx.x * blockDim.x + threadIdx.x;
-  if (p >= pairs) return;
-  const int i = pair_i[p], j = pair_j[p];
-  entries[offsets[i] + atomicAdd(&cursor[i], 1)] = 2 * p;
-  entries[offsets[j] + atomicAdd(&cursor[j], 1)] = 2 * p + 1;
-}
-
-/// Each cell's entries in pair order (the CPU's order): the gather then sums alike on both.
-__global__ void sortIncidence(int n, const int* offsets, int* entries) {
-  const int k = blockIdx.x * blockDim.x + threadIdx.x;
-  if (k >= n) return;
-  for (int a = offsets[k] + 1; a < offsets[k + 1]; ++a) {
-    const int key = entries[a];
-    int b = a - 1;
-    while (b >= offsets[k] && entries[b] > key) {
-      entries[b + 1] = entries[b];
-      --b;
-    }
-    entries[b + 1] = key;
-  }
-}
-
 // --- The backend ------------------------------------------------------------------------------
 
 class CudaBackend final : public Backend {
  public:
-  explicit CudaBackend(const Model& model) : model_(model), n_(model.cell_count),
-                                             bonds_(static_cast<int>(model.bond_rest.size())) {
+  explicit CudaBackend(const Model& model)
+      : model_(model), n_(model.cell_count), bonds_(static_cast<int>(model.bond_rest.size())), contacts_(n_) {
     TIS_CUDA_CHECK(cudaStreamCreateWithFlags(&stream_, cudaStreamNonBlocking));
     vertex_x_.upload(model.vertex_x);
     vertex_y_.upload(model.vertex_y);
@@ -392,21 +202,8 @@ class CudaBackend final : public Backend {
     structure_.resize(n_);
     totals_.resize(kLoadTotals);
     panels_.resize(static_cast<size_t>(kLoadPerPanel) * model.constants.panels);
-    contact_offsets_.resize(n_ + 1);
-    cursor_.resize(n_ + 1);
-    candidate_count_.resize(n_ + 1);
-    candidate_offsets_.resize(n_ + 1);
-    keys_.resize(n_);
-    sorted_keys_.resize(n_);
-    cells_.resize(n_);
-    sorted_cells_.resize(n_);
-    table_size_ = 1;
-    while (table_size_ < 2u * static_cast<unsigned int>(std::max(n_, 1))) table_size_ <<= 1;
-    bin_start_.resize(table_size_);
-    bin_end_.resize(table_size_);
     run_.resize(1);
     TIS_CUDA_CHECK(cudaMallocHost(&run_host_, sizeof(RunScalars)));
-    ensurePairCapacity(static_cast<size_t>(8) * std::max(n_, 1));
     reset();
   }
 
@@ -426,7 +223,7 @@ class CudaBackend final : public Backend {
     r.pusher_x = model_.initial_pusher_x;
     *run_host_ = r;
     TIS_CUDA_CHECK(cudaMemcpy(run_.get(), &r, sizeof(RunScalars), cudaMemcpyHostToDevice));
-    pair_count_ = 0;
+    contacts_.clear();
     time_ = 0.0;
     steps_ = 0;
     pusher_x_ = model_.initial_pusher_x;
@@ -503,15 +300,15 @@ class CudaBackend final : public Backend {
                                                                inertia_.get(), turn_.get(), bond_broken_.get(),
                                                                bond_force_.get());
     }
-    const int capacity = static_cast<int>(pair_i_.size());
+    const int capacity = contacts_.capacity();
     contactForces<<<blocksFor(capacity), kThreads, 0, stream_>>>(
-        capacity, run, c, pair_i_.get(), pair_j_.get(), motion_.get(), mass_.get(), inertia_.get(), world_.get(),
-        vertex_count_.get(), box_.get(), reference_area_.get(), contact_force_.get());
+        capacity, run, c, contacts_.pairI(), contacts_.pairJ(), motion_.get(), mass_.get(), inertia_.get(),
+        world_.get(), vertex_count_.get(), box_.get(), contacts_.referenceArea(), contacts_.force());
     const CellStepInputs in = {mass_.get(),          inertia_.get(),        area_.get(),
                                vertex_count_.get(),  world_.get(),          box_.get(),
                                bond_offsets_.get(),  bond_entries_.get(),   bond_broken_.get(),
-                               bond_force_.get(),    contact_offsets_.get(), contact_entries_.get(),
-                               contact_force_.get()};
+                               bond_force_.get(),    contacts_.incidenceOffsets(), contacts_.incidenceEntries(),
+                               contacts_.force()};
     stepCells<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, c, in, reference_.get(), motion_.get(),
                                                         structure_.get(), totals_.get(), panels_.get());
     finishStep<<<1, 1, 0, stream_>>>(run, c.time_step, c.max_steps_between_rebuilds);
@@ -530,116 +327,20 @@ class CudaBackend final : public Backend {
     TIS_CUDA_CHECK(cudaGraphLaunch(graph_exec_, stream_));
   }
 
-  void ensurePairCapacity(size_t pairs) {
-    if (pairs <= pair_i_.size() && pair_i_.size() > 0) return;
-    const size_t capacity = std::max(pairs + pairs / 2, static_cast<size_t>(1024));
-    // Keep the current list (its S_ref) across the move.
-    std::vector<int> keep_i, keep_j;
-    std::vector<double> keep_ref;
-    if (pair_count_ > 0) {
-      keep_i = pair_i_.download(); keep_i.resize(pair_count_);
-      keep_j = pair_j_.download(); keep_j.resize(pair_count_);
-      keep_ref = reference_area_.download(); keep_ref.resize(pair_count_);
-    }
-    for (DeviceArray<int>* a : {&pair_i_, &pair_j_, &new_i_, &new_j_}) a->resize(capacity);  // contents dropped
-    reference_area_.resize(capacity);
-    new_reference_.resize(capacity);
-    contact_force_.resize(capacity);
-    contact_entries_.resize(2 * capacity);
-    if (pair_count_ > 0) {
-      TIS_CUDA_CHECK(cudaMemcpy(pair_i_.get(), keep_i.data(), pair_count_ * sizeof(int), cudaMemcpyHostToDevice));
-      TIS_CUDA_CHECK(cudaMemcpy(pair_j_.get(), keep_j.data(), pair_count_ * sizeof(int), cudaMemcpyHostToDevice));
-      TIS_CUDA_CHECK(cudaMemcpy(reference_area_.get(), keep_ref.data(), pair_count_ * sizeof(double),
-                                cudaMemcpyHostToDevice));
-    }
-    TIS_CUDA_CHECK(cudaDeviceSynchronize());  // the copies above ran on the legacy stream
-    if (graph_exec_ != nullptr) {  // it holds the old pointers and sizes
+  void rebuildContacts() {
+    const ModelConstants& c = model_.constants;
+    const CandidateInputs in = {n_,          motion_.get(),       radius_.get(),      c.search_radius,
+                                c.search_margin, bond_offsets_.get(), bond_entries_.get(), bond_i_.get(),
+                                bond_j_.get(), bond_broken_.get()};
+    if (contacts_.rebuild(in, stream_) && graph_exec_ != nullptr) {  // it holds the old pointers and sizes
       TIS_CUDA_CHECK(cudaGraphExecDestroy(graph_exec_));
       graph_exec_ = nullptr;
     }
-  }
-
-  void rebuildContacts() {
-    const ModelConstants& c = model_.constants;
-    const int grid = blocksFor(n_);
-    // Bins of the search radius, hashed; cells sorted by bin.
-    hashCells<<<grid, kThreads, 0, stream_>>>(n_, motion_.get(), c.search_radius, table_size_ - 1, keys_.get(),
-                                               cells_.get());
-    size_t temp_bytes = 0;
-    int end_bit = 0;
-    while ((1u << end_bit) < table_size_) ++end_bit;
-    TIS_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(nullptr, temp_bytes, keys_.get(), sorted_keys_.get(), cells_.get(),
-                                                   sorted_cells_.get(), n_, 0, end_bit, stream_));
-    temp_.resize(temp_bytes);
-    TIS_CUDA_CHECK(cub::DeviceRadixSort::SortPairs(temp_.get(), temp_bytes, keys_.get(), sorted_keys_.get(),
-                                                   cells_.get(), sorted_cells_.get(), n_, 0, end_bit, stream_));
-    TIS_CUDA_CHECK(cudaMemsetAsync(bin_start_.get(), 0, bin_start_.bytes(), stream_));
-    TIS_CUDA_CHECK(cudaMemsetAsync(bin_end_.get(), 0, bin_end_.bytes(), stream_));
-    binBounds<<<grid, kThreads, 0, stream_>>>(n_, sorted_keys_.get(), bin_start_.get(), bin_end_.get());
-
-    const RebuildView view = {n_,
-                              motion_.get(),
-                              radius_.get(),
-                              c.search_radius,
-                              c.search_margin,
-                              c.search_radius,
-                              table_size_ - 1,
-                              bin_start_.get(),
-                              bin_end_.get(),
-                              sorted_cells_.get(),
-                              bond_offsets_.get(),
-                              bond_entries_.get(),
-                              bond_i_.get(),
-                              bond_j_.get(),
-                              bond_broken_.get()};
-    // Count, scan, and (after making room) write the candidate pairs, sorted by (i, j).
-    TIS_CUDA_CHECK(cudaMemsetAsync(candidate_count_.get(), 0, candidate_count_.bytes(), stream_));
-    countCandidates<<<grid, kThreads, 0, stream_>>>(view, candidate_count_.get());
-    TIS_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(nullptr, temp_bytes, candidate_count_.get(),
-                                                 candidate_offsets_.get(), n_ + 1, stream_));
-    temp_.resize(temp_bytes);
-    TIS_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(temp_.get(), temp_bytes, candidate_count_.get(),
-                                                 candidate_offsets_.get(), n_ + 1, stream_));
-    int total = 0;
-    TIS_CUDA_CHECK(cudaMemcpyAsync(&total, candidate_offsets_.get() + n_, sizeof(int), cudaMemcpyDeviceToHost, stream_));
-    TIS_CUDA_CHECK(cudaStreamSynchronize(stream_));
-    ensurePairCapacity(static_cast<size_t>(total));
-    writeCandidates<<<grid, kThreads, 0, stream_>>>(view, candidate_offsets_.get(), new_i_.get(), new_j_.get());
-    carryReferences<<<blocksFor(total), kThreads, 0, stream_>>>(total, new_i_.get(), new_j_.get(), pair_count_,
-                                                                 pair_i_.get(), pair_j_.get(), reference_area_.get(),
-                                                                 new_reference_.get());
-    // The new list replaces the old one in place (the captured graph keeps its pointers).
-    if (total > 0) {
-      TIS_CUDA_CHECK(cudaMemcpyAsync(pair_i_.get(), new_i_.get(), total * sizeof(int), cudaMemcpyDeviceToDevice, stream_));
-      TIS_CUDA_CHECK(cudaMemcpyAsync(pair_j_.get(), new_j_.get(), total * sizeof(int), cudaMemcpyDeviceToDevice, stream_));
-      TIS_CUDA_CHECK(cudaMemcpyAsync(reference_area_.get(), new_reference_.get(), total * sizeof(double),
-                                     cudaMemcpyDeviceToDevice, stream_));
-    }
-    pair_count_ = total;
-
-    // Per-cell incidence lists in pair order.
-    TIS_CUDA_CHECK(cudaMemsetAsync(candidate_count_.get(), 0, candidate_count_.bytes(), stream_));
-    countIncidence<<<blocksFor(total), kThreads, 0, stream_>>>(total, pair_i_.get(), pair_j_.get(),
-                                                                candidate_count_.get());
-    TIS_CUDA_CHECK(cub::DeviceScan::ExclusiveSum(temp_.get(), temp_bytes, candidate_count_.get(),
-                                                 contact_offsets_.get(), n_ + 1, stream_));
-    TIS_CUDA_CHECK(cudaMemsetAsync(cursor_.get(), 0, cursor_.bytes(), stream_));
-    writeIncidence<<<blocksFor(total), kThreads, 0, stream_>>>(total, pair_i_.get(), pair_j_.get(),
-                                                                contact_offsets_.get(), cursor_.get(),
-                                                                contact_entries_.get());
-    sortIncidence<<<grid, kThreads, 0, stream_>>>(n_, contact_offsets_.get(), contact_entries_.get());
-
     // Algorithm 1: the state at this rebuild is the reference of the next test; clear the flags.
     TIS_CUDA_CHECK(cudaMemcpyAsync(reference_.get(), motion_.get(), n_ * sizeof(CellMotion), cudaMemcpyDeviceToDevice,
                                    stream_));
-    RunScalars* run = run_.get();
-    const int zero = 0;
-    TIS_CUDA_CHECK(cudaMemcpyAsync(&run->pair_count, &total, sizeof(int), cudaMemcpyHostToDevice, stream_));
-    TIS_CUDA_CHECK(cudaMemcpyAsync(&run->flags, &zero, sizeof(int), cudaMemcpyHostToDevice, stream_));
-    TIS_CUDA_CHECK(cudaMemcpyAsync(&run->stop, &zero, sizeof(int), cudaMemcpyHostToDevice, stream_));
-    TIS_CUDA_CHECK(cudaMemcpyAsync(&run->steps_since_rebuild, &zero, sizeof(int), cudaMemcpyHostToDevice, stream_));
+    startAfterRebuild<<<1, 1, 0, stream_>>>(run_.get(), contacts_.count());
     TIS_CUDA_CHECK(cudaGetLastError());
-    TIS_CUDA_CHECK(cudaStreamSynchronize(stream_));  // `total` and `zero` live on this stack frame
     rebuild_requested_ = false;
   }
 
@@ -692,15 +393,7 @@ class CudaBackend final : public Backend {
   DeviceArray<StructureContact> structure_;
   DeviceArray<double> totals_, panels_;
   DeviceArray<RunScalars> run_;
-  // Contacts (capacity-sized) and the rebuild's scratch.
-  DeviceArray<int> pair_i_, pair_j_, new_i_, new_j_, contact_offsets_, contact_entries_, cursor_;
-  DeviceArray<double> reference_area_, new_reference_;
-  DeviceArray<PairForce> contact_force_;
-  DeviceArray<int> candidate_count_, candidate_offsets_, cells_, sorted_cells_, bin_start_, bin_end_;
-  DeviceArray<unsigned int> keys_, sorted_keys_;
-  DeviceArray<unsigned char> temp_;
-  unsigned int table_size_ = 1;
-  int pair_count_ = 0;
+  DeviceContactList contacts_;
   bool rebuild_requested_ = true;
   double time_ = 0.0;
   long steps_ = 0;
