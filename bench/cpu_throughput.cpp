@@ -1,7 +1,8 @@
 // CPU throughput benchmark: cell-steps per second of the whole time step (all forces, contacts,
 // integration, loads) for an intact bonded sheet and for a broken field, at several sizes and
 // thread counts. Prints a Markdown table on stdout.
-//   thin_ice_bench_cpu --scenario FILE [--cells N]... [--threads T]... [--cell-steps S]
+//   thin_ice_bench_cpu --scenario FILE [--cells N]... [--threads T]... [--sheet intact|broken]...
+//                      [--cell-steps S]
 // Each case: a square-ish sheet of about N cells cut from FILE's ice (structure and walls moved
 // out of the way), 20 warm-up steps, then enough steps for about S cell-steps (default 3e7).
 // "broken": flexural and compressive strength set to 1 Pa, so every bond breaks in the first
@@ -48,6 +49,7 @@ int main(int argc, char** argv) {
   std::string scenario_path;
   std::vector<long> sizes;
   std::vector<int> threads;
+  std::vector<bool> sheets;  // broken?
   double cell_steps = 3e7;
   for (int k = 1; k + 1 < argc; k += 2) {
     const std::string flag = argv[k], value = argv[k + 1];
@@ -55,23 +57,27 @@ int main(int argc, char** argv) {
     else if (flag == "--cells") sizes.push_back(std::atol(value.c_str()));
     else if (flag == "--threads") threads.push_back(std::atoi(value.c_str()));
     else if (flag == "--cell-steps") cell_steps = std::atof(value.c_str());
+    else if (flag == "--sheet" && (value == "intact" || value == "broken")) sheets.push_back(value == "broken");
     else {
       std::fprintf(stderr, "unknown flag %s\n", flag.c_str());
       return 2;
     }
   }
   if (scenario_path.empty()) {
-    std::fprintf(stderr, "usage: thin_ice_bench_cpu --scenario FILE [--cells N]... [--threads T]... [--cell-steps S]\n");
+    std::fprintf(stderr,
+                 "usage: thin_ice_bench_cpu --scenario FILE [--cells N]... [--threads T]... "
+                 "[--sheet intact|broken]... [--cell-steps S]\n");
     return 2;
   }
   if (sizes.empty()) sizes = {1000, 10000, 100000};
   if (threads.empty()) threads = {1, 2};
+  if (sheets.empty()) sheets = {false, true};
   try {
     const thin_ice::Params base = thin_ice::loadScenario(scenario_path).params;
     std::printf("| cells | sheet | threads | steps | wall [s] | cell-steps/s | ns per cell-step |\n");
     std::printf("|---:|---|---:|---:|---:|---:|---:|\n");
     for (long n : sizes) {
-      for (bool broken : {false, true}) {
+      for (bool broken : sheets) {
         for (int t : threads) {
           const thin_ice::Scenario s = thin_ice::loadScenario(scenario_path, sheetOverrides(base, n, broken, t));
           thin_ice::Simulation sim(s, thin_ice::BackendKind::kCpu);

@@ -190,7 +190,8 @@ bool DeviceContactList::reserve(size_t pairs) {
   pair_i_.resize(capacity);
   pair_j_.resize(capacity);
   reference_area_.resize(capacity);
-  force_.resize(capacity);
+  touching_.resize(capacity);
+  load_.resize(capacity);
   entries_.resize(2 * capacity);
   return true;
 }

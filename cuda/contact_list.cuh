@@ -45,7 +45,8 @@ class DeviceContactList {
   const int* pairI() const { return pair_i_.get(); }
   const int* pairJ() const { return pair_j_.get(); }
   double* referenceArea() const { return reference_area_.get(); }
-  PairForce* force() const { return force_.get(); }
+  unsigned char* touching() const { return touching_.get(); }
+  PairLoad* load() const { return load_.get(); }
   const int* incidenceOffsets() const { return offsets_.get(); }
   const int* incidenceEntries() const { return entries_.get(); }
 
@@ -59,7 +60,8 @@ class DeviceContactList {
   // The list the step reads (capacity-sized).
   DeviceArray<int> pair_i_, pair_j_, offsets_, entries_;
   DeviceArray<double> reference_area_;
-  DeviceArray<PairForce> force_;
+  DeviceArray<unsigned char> touching_;
+  DeviceArray<PairLoad> load_;
   // The rebuild's scratch.
   DeviceArray<int> new_i_, new_j_, count_per_cell_, candidate_offsets_, cursor_, cell_ids_, sorted_cells_;
   DeviceArray<int> bin_start_, bin_end_;

@@ -80,41 +80,42 @@ __device__ BodyState bodyOf(const CellMotion& m, double mass, double inertia) {
 
 __global__ void bondForces(int bonds, RunScalars* run, ModelConstants c, const int* bond_i, const int* bond_j,
                            const BondRest* rest, const CellMotion* motion, const double* mass, const double* inertia,
-                           const Vec2* turn, unsigned char* broken, BondForce* force) {
+                           const Vec2* turn, unsigned char* state, PairLoad* load) {
   const int b = blockIdx.x * blockDim.x + threadIdx.x;
   if (b >= bonds || run->stop) return;
-  if (broken[b]) {
-    force[b].breaks = false;  // it broke in the last step and has applied its last force
-    return;
-  }
+  const unsigned char was = state[b];
+  if (was == kBondBreaking) state[b] = kBondBroken;  // it applied its last force in the last step
+  if (was != kBondIntact) return;
   const int i = bond_i[b], j = bond_j[b];
   const BondForce f = rmibBondForce(rest[b], bodyOf(motion[i], mass[i], inertia[i]), turn[i],
                                     bodyOf(motion[j], mass[j], inertia[j]), turn[j], c.bond);
-  force[b] = f;
+  load[b] = bondLoad(f);
   if (f.breaks) {
-    broken[b] = 1;  // for good; its force of this step still acts
+    state[b] = kBondBreaking;  // for good; its force of this step still acts
     atomicAdd(&run->newly_broken, 1);
   }
 }
 
 __global__ void contactForces(int capacity, RunScalars* run, ModelConstants c, const int* pair_i, const int* pair_j,
                               const CellMotion* motion, const double* mass, const double* inertia, const Vec2* world,
-                              const int* vertex_count, const double* box, double* reference, PairForce* force) {
+                              const int* vertex_count, const double* box, double* reference,
+                              unsigned char* touching, PairLoad* load) {
   const int p = blockIdx.x * blockDim.x + threadIdx.x;
   if (p >= capacity || run->stop || p >= run->pair_count) return;
   const int i = pair_i[p], j = pair_j[p];
   const double* bi = box + 4 * i;
   const double* bj = box + 4 * j;
   if (bi[1] <= bj[0] || bj[1] <= bi[0] || bi[3] <= bj[2] || bj[3] <= bi[2]) {
-    force[p].touching = false;
+    touching[p] = 0;
     reference[p] = 0.0;
     return;
   }
   const PolygonOverlap overlap = intersectConvexPolygons(world + (size_t)i * kV, vertex_count[i],
                                                          world + (size_t)j * kV, vertex_count[j]);
-  const PairForce f = demContactForce(overlap, bodyOf(motion[i], mass[i], inertia[i]),
-                                      bodyOf(motion[j], mass[j], inertia[j]), c.contact, reference[p]);
-  force[p] = f;
+  const BodyState body_i = bodyOf(motion[i], mass[i], inertia[i]), body_j = bodyOf(motion[j], mass[j], inertia[j]);
+  const PairForce f = demContactForce(overlap, body_i, body_j, c.contact, reference[p]);
+  load[p] = contactLoad(f, body_i.centroid, body_j.centroid);
+  touching[p] = f.touching ? 1 : 0;
   reference[p] = f.reference_area;
   if (f.touching) atomicAdd(&run->touching, 1);
 }
@@ -192,8 +193,8 @@ class CudaBackend final : public Backend {
     bonds.build(n_, model.bond_i, model.bond_j);
     bond_offsets_.upload(bonds.offsets);
     bond_entries_.upload(bonds.entries);
-    bond_force_.resize(bonds_);
-    bond_broken_.resize(bonds_);
+    bond_load_.resize(bonds_);
+    bond_state_.resize(bonds_);
     motion_.resize(n_);
     reference_.resize(n_);
     world_.resize(static_cast<size_t>(n_) * kV);
@@ -217,8 +218,8 @@ class CudaBackend final : public Backend {
 
   void reset() override {
     motion_.upload(model_.initial);
-    TIS_CUDA_CHECK(cudaMemset(bond_broken_.get(), 0, bonds_ * sizeof(unsigned char)));
-    TIS_CUDA_CHECK(cudaMemset(bond_force_.get(), 0, bonds_ * sizeof(BondForce)));
+    TIS_CUDA_CHECK(cudaMemset(bond_state_.get(), 0, bonds_ * sizeof(unsigned char)));
+    TIS_CUDA_CHECK(cudaMemset(bond_load_.get(), 0, bonds_ * sizeof(PairLoad)));
     RunScalars r{};
     r.pusher_x = model_.initial_pusher_x;
     *run_host_ = r;
@@ -284,7 +285,7 @@ class CudaBackend final : public Backend {
   std::string healthError() const override { return health_error_; }
 
   std::vector<CellSnapshot> cells() const override {
-    return makeCellSnapshots(model_, motion_.download(), bond_broken_.download());
+    return makeCellSnapshots(model_, motion_.download(), bond_state_.download());
   }
 
  private:
@@ -297,18 +298,28 @@ class CudaBackend final : public Backend {
     if (bonds_ > 0) {
       bondForces<<<blocksFor(bonds_), kThreads, 0, stream_>>>(bonds_, run, c, bond_i_.get(), bond_j_.get(),
                                                                bond_rest_.get(), motion_.get(), mass_.get(),
-                                                               inertia_.get(), turn_.get(), bond_broken_.get(),
-                                                               bond_force_.get());
+                                                               inertia_.get(), turn_.get(), bond_state_.get(),
+                                                               bond_load_.get());
     }
     const int capacity = contacts_.capacity();
     contactForces<<<blocksFor(capacity), kThreads, 0, stream_>>>(
         capacity, run, c, contacts_.pairI(), contacts_.pairJ(), motion_.get(), mass_.get(), inertia_.get(),
-        world_.get(), vertex_count_.get(), box_.get(), contacts_.referenceArea(), contacts_.force());
-    const CellStepInputs in = {mass_.get(),          inertia_.get(),        area_.get(),
-                               vertex_count_.get(),  world_.get(),          box_.get(),
-                               bond_offsets_.get(),  bond_entries_.get(),   bond_broken_.get(),
-                               bond_force_.get(),    contacts_.incidenceOffsets(), contacts_.incidenceEntries(),
-                               contacts_.force()};
+        world_.get(), vertex_count_.get(), box_.get(), contacts_.referenceArea(), contacts_.touching(),
+        contacts_.load());
+    const CellStepInputs in = {mass_.get(),
+                               inertia_.get(),
+                               area_.get(),
+                               vertex_count_.get(),
+                               world_.get(),
+                               box_.get(),
+                               bond_offsets_.get(),
+                               bond_entries_.get(),
+                               bond_state_.get(),
+                               bond_load_.get(),
+                               contacts_.incidenceOffsets(),
+                               contacts_.incidenceEntries(),
+                               contacts_.touching(),
+                               contacts_.load()};
     stepCells<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, c, in, reference_.get(), motion_.get(),
                                                         structure_.get(), totals_.get(), panels_.get());
     finishStep<<<1, 1, 0, stream_>>>(run, c.time_step, c.max_steps_between_rebuilds);
@@ -331,7 +342,7 @@ class CudaBackend final : public Backend {
     const ModelConstants& c = model_.constants;
     const CandidateInputs in = {n_,          motion_.get(),       radius_.get(),      c.search_radius,
                                 c.search_margin, bond_offsets_.get(), bond_entries_.get(), bond_i_.get(),
-                                bond_j_.get(), bond_broken_.get()};
+                                bond_j_.get(), bond_state_.get()};
     if (contacts_.rebuild(in, stream_) && graph_exec_ != nullptr) {  // it holds the old pointers and sizes
       TIS_CUDA_CHECK(cudaGraphExecDestroy(graph_exec_));
       graph_exec_ = nullptr;
@@ -386,8 +397,8 @@ class CudaBackend final : public Backend {
   DeviceArray<BondRest> bond_rest_;
   // State.
   DeviceArray<CellMotion> motion_, reference_;
-  DeviceArray<unsigned char> bond_broken_;
-  DeviceArray<BondForce> bond_force_;
+  DeviceArray<unsigned char> bond_state_;  ///< (bonds) BondState
+  DeviceArray<PairLoad> bond_load_;  ///< (bonds)
   DeviceArray<Vec2> world_, turn_;
   DeviceArray<double> box_;
   DeviceArray<StructureContact> structure_;

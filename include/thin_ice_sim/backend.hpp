@@ -30,7 +30,7 @@ class Backend {
 };
 
 /// Cell snapshots from a backend's state: cell k is in the intact sheet while any of its bonds
-/// holds (bond_broken: one flag per bond of the model).
+/// holds (bond_broken: one BondState per bond of the model; any but kBondIntact is broken).
 std::vector<CellSnapshot> makeCellSnapshots(const Model& model, const std::vector<CellMotion>& motion,
                                             const std::vector<unsigned char>& bond_broken);
 

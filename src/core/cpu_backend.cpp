@@ -42,7 +42,7 @@ class CpuBackend final : public Backend {
     box_.resize(static_cast<size_t>(n) * 4);
     structure_.resize(n);
     pusher_fx_.resize(n);
-    bond_force_.resize(model_.bond_rest.size());
+    bond_load_.resize(model_.bond_rest.size());
     bond_incidence_.build(n, model_.bond_i, model_.bond_j);
     reset();
   }
@@ -51,7 +51,7 @@ class CpuBackend final : public Backend {
 
   void reset() override {
     motion_ = model_.initial;
-    bond_broken_.assign(model_.bond_rest.size(), 0);
+    bond_state_.assign(model_.bond_rest.size(), kBondIntact);
     broken_count_ = 0;
     time_ = 0.0;
     steps_ = 0;
@@ -104,7 +104,7 @@ class CpuBackend final : public Backend {
   std::string healthError() const override { return health_error_; }
 
   std::vector<CellSnapshot> cells() const override {
-    return makeCellSnapshots(model_, motion_, bond_broken_);
+    return makeCellSnapshots(model_, motion_, bond_state_);
   }
 
  private:
@@ -144,7 +144,8 @@ class CpuBackend final : public Backend {
       contact_j_.push_back(p.j);
       contact_reference_.push_back(kept ? previous_reference_[cursor] : -1.0);
     }
-    contact_force_.resize(contact_i_.size());
+    contact_touching_.resize(contact_i_.size());
+    contact_load_.resize(contact_i_.size());
     contact_incidence_.build(n, contact_i_, contact_j_);
     reference_ = motion_;
     steps_since_rebuild_ = 0;
@@ -154,7 +155,7 @@ class CpuBackend final : public Backend {
   bool hasIntactBond(int i, int j) const {
     for (int e = bond_incidence_.offsets[i]; e < bond_incidence_.offsets[i + 1]; ++e) {
       const int b = bond_incidence_.entries[e] >> 1;
-      if (!bond_broken_[b] && (model_.bond_i[b] == j || model_.bond_j[b] == j)) return true;
+      if (bond_state_[b] == kBondIntact && (model_.bond_i[b] == j || model_.bond_j[b] == j)) return true;
     }
     return false;
   }
@@ -174,12 +175,13 @@ class CpuBackend final : public Backend {
     int newly_broken = 0;
 #pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_) reduction(+ : newly_broken)
     for (int b = 0; b < bonds; ++b) {
-      if (bond_broken_[b]) continue;
+      if (bond_state_[b] != kBondIntact) continue;
       const int i = model_.bond_i[b], j = model_.bond_j[b];
-      bond_force_[b] = rmibBondForce(model_.bond_rest[b], body(i), turn_[i], body(j), turn_[j],
-                                     model_.constants.bond);
-      if (bond_force_[b].breaks) {
-        bond_broken_[b] = 1;  // for good; its force of this step still acts
+      const BondForce f = rmibBondForce(model_.bond_rest[b], body(i), turn_[i], body(j), turn_[j],
+                                        model_.constants.bond);
+      bond_load_[b] = bondLoad(f);
+      if (f.breaks) {
+        bond_state_[b] = kBondBreaking;  // for good; its force of this step still acts
         ++newly_broken;
       }
     }
@@ -187,7 +189,7 @@ class CpuBackend final : public Backend {
       broken_count_ += newly_broken;
       rebuild_requested_ = true;  // the pair now needs a DEM contact
       for (int b = 0; b < bonds; ++b) {
-        if (bond_force_[b].breaks && bond_broken_[b]) just_broken_.push_back(b);
+        if (bond_state_[b] == kBondBreaking) just_broken_.push_back(b);
       }
     }
   }
@@ -198,18 +200,20 @@ class CpuBackend final : public Backend {
 #pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_) reduction(+ : touching)
     for (int p = 0; p < pairs; ++p) {
       const int i = contact_i_[p], j = contact_j_[p];
-      PairForce& f = contact_force_[p];
       const double* bi = &box_[4 * i];
       const double* bj = &box_[4 * j];
       if (bi[1] <= bj[0] || bj[1] <= bi[0] || bi[3] <= bj[2] || bj[3] <= bi[2]) {
-        f.touching = false;
+        contact_touching_[p] = 0;
         contact_reference_[p] = 0.0;
         continue;
       }
       const PolygonOverlap overlap = intersectConvexPolygons(
           &world_[static_cast<size_t>(i) * kV], model_.vertex_count[i], &world_[static_cast<size_t>(j) * kV],
           model_.vertex_count[j]);
-      f = demContactForce(overlap, body(i), body(j), model_.constants.contact, contact_reference_[p]);
+      const BodyState body_i = body(i), body_j = body(j);
+      const PairForce f = demContactForce(overlap, body_i, body_j, model_.constants.contact, contact_reference_[p]);
+      contact_load_[p] = contactLoad(f, body_i.centroid, body_j.centroid);
+      contact_touching_[p] = f.touching ? 1 : 0;
       contact_reference_[p] = f.reference_area;
       touching += f.touching ? 1 : 0;
     }
@@ -224,13 +228,20 @@ class CpuBackend final : public Backend {
     computeBondForces();
     computeContactForces();
     bool blown = false, moved_far = false;
-    const CellStepInputs in = {model_.mass.data(),          model_.inertia.data(),
-                               model_.area.data(),          model_.vertex_count.data(),
-                               world_.data(),               box_.data(),
-                               bond_incidence_.offsets.data(), bond_incidence_.entries.data(),
-                               bond_broken_.data(),         bond_force_.data(),
-                               contact_incidence_.offsets.data(), contact_incidence_.entries.data(),
-                               contact_force_.data()};
+    const CellStepInputs in = {model_.mass.data(),
+                               model_.inertia.data(),
+                               model_.area.data(),
+                               model_.vertex_count.data(),
+                               world_.data(),
+                               box_.data(),
+                               bond_incidence_.offsets.data(),
+                               bond_incidence_.entries.data(),
+                               bond_state_.data(),
+                               bond_load_.data(),
+                               contact_incidence_.offsets.data(),
+                               contact_incidence_.entries.data(),
+                               contact_touching_.data(),
+                               contact_load_.data()};
 #pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_) reduction(|| : blown, moved_far)
     for (int k = 0; k < n; ++k) {
       const CellStepResult r =
@@ -241,7 +252,7 @@ class CpuBackend final : public Backend {
     }
     if (moved_far || steps_since_rebuild_ + 1 >= c.max_steps_between_rebuilds) rebuild_requested_ = true;
     // Bonds broken in this step have applied their last force: they stop here.
-    for (int b : just_broken_) bond_force_[b].breaks = false;
+    for (int b : just_broken_) bond_state_[b] = kBondBroken;
     just_broken_.clear();
     // Loads, summed in cell order (deterministic).
     for (int k = 0; k < n; ++k) {
@@ -283,15 +294,16 @@ class CpuBackend final : public Backend {
   std::vector<double> box_;               ///< (cells x 4) x0 x1 y0 y1 [m]
   std::vector<StructureContact> structure_;
   std::vector<double> pusher_fx_;         ///< (cells) [N]
-  std::vector<unsigned char> bond_broken_;
-  std::vector<BondForce> bond_force_;
+  std::vector<unsigned char> bond_state_;  ///< (bonds) BondState
+  std::vector<PairLoad> bond_load_;
   Incidence bond_incidence_, contact_incidence_;
   FixedRadiusNeighbourSearch search_;
   std::vector<int> contact_i_, contact_j_;  ///< sorted by (i, j)
   std::vector<double> contact_reference_;   ///< S_ref of each pair [m^2] (contact.hpp), -1: new
   std::vector<int> previous_i_, previous_j_;
   std::vector<double> previous_reference_;
-  std::vector<PairForce> contact_force_;
+  std::vector<unsigned char> contact_touching_;  ///< (pairs) S > 0 in this step
+  std::vector<PairLoad> contact_load_;
   int broken_count_ = 0;
   int last_contacts_ = 0;
   long steps_since_rebuild_ = 0;

@@ -59,6 +59,16 @@ struct BondForce {
   bool breaks;         ///< Eq. (13) met in this step
 };
 
+/// Life of a bond, one byte per bond. A bond that breaks still applies the force of the step in
+/// which it broke (kBondBreaking); from the next step on it is gone for good (kBondBroken).
+/// Any state other than kBondIntact counts as broken for contacts and for output.
+enum BondState : unsigned char { kBondIntact = 0, kBondBreaking = 1, kBondBroken = 2 };
+
+/// The load of a bond force on its two cells: the moments act through the anchors.
+TIS_HD PairLoad bondLoad(const BondForce& f) {
+  return {f.force_on_j, f.fz_on_j, cross(f.arm_i, -f.force_on_j), cross(f.arm_j, f.force_on_j)};
+}
+
 /// Bending or shear reading of sigma_v (SPEC-NOTES, "RMIB bonds").
 TIS_HD double verticalBondStress(double vertical_force, const BondRest& b, const BondConstants& c) {
   const double h = c.thickness;

@@ -10,6 +10,7 @@
 #include "thin_ice_sim/physics/bond.hpp"
 #include "thin_ice_sim/physics/contact.hpp"
 #include "thin_ice_sim/physics/host_device.hpp"
+#include "thin_ice_sim/physics/scalar.hpp"
 #include "thin_ice_sim/physics/integrate.hpp"
 #include "thin_ice_sim/physics/plane_contact.hpp"
 #include "thin_ice_sim/physics/water.hpp"
@@ -73,11 +74,12 @@ struct CellStepInputs {
   const double* box;                  ///< (cells x 4) x0 x1 y0 y1 [m]
   const int* bond_offsets;            ///< (cells + 1)
   const int* bond_entries;
-  const unsigned char* bond_broken;   ///< (bonds)
-  const BondForce* bond_force;        ///< (bonds)
+  const unsigned char* bond_state;    ///< (bonds) BondState
+  const PairLoad* bond_load;          ///< (bonds) valid where the state is not kBondBroken
   const int* contact_offsets;         ///< (cells + 1)
   const int* contact_entries;
-  const PairForce* contact_force;     ///< (pairs)
+  const unsigned char* contact_touching;  ///< (pairs) S > 0 in this step
+  const PairLoad* contact_load;       ///< (pairs) valid where touching
 };
 
 /// What one cell's update reports.
@@ -86,6 +88,15 @@ struct CellStepResult {
   bool blown;        ///< non-finite state or faster than runaway_speed
   bool moved_far;    ///< Algorithm 1, lines 14-16: moved or turned too far since the last rebuild
 };
+
+/// Adds a pair's load to one of its cells (is_j: the cell is the pair's j).
+TIS_HD void addPairLoad(const PairLoad& f, bool is_j, double& fx, double& fy, double& fz, double& tz) {
+  const double sign = is_j ? 1.0 : -1.0;
+  fx += sign * f.force_on_j.x;
+  fy += sign * f.force_on_j.y;
+  fz += sign * f.fz_on_j;
+  tz += is_j ? f.torque_on_j : f.torque_on_i;
+}
 
 /// Adds the force of a plane on the cell to (fx, fy, fz, tz) and returns it.
 TIS_HD PlaneContactForce addPlaneContact(const SlabPenetration& pen, const RigidPlane& plane,
@@ -150,8 +161,8 @@ TIS_HD double addRigidPlaneForces(const ModelConstants& c, const Vec2* poly, int
   const double lowest = face.mx * box[1] + face.mz * z_low;
   if (lowest < face.offset && z_low < c.structure_top_z) {
     const double y_end = c.structure_y_min + c.panels * c.panel_width;
-    const int first = (int)fmax(0.0, floor((box[2] - c.structure_y_min) / c.panel_width));
-    const int last = (int)fmin((double)(c.panels - 1), floor((box[3] - c.structure_y_min) / c.panel_width));
+    const int first = (int)maxOf(0.0, floor((box[2] - c.structure_y_min) / c.panel_width));
+    const int last = (int)minOf((double)(c.panels - 1), floor((box[3] - c.structure_y_min) / c.panel_width));
     if (box[3] > c.structure_y_min && box[2] < y_end && first <= last) {
       s.first_panel = first;
       for (int p = first; p <= last && s.panel_count < kMaxPanelsPerCell; ++p) {
@@ -159,7 +170,7 @@ TIS_HD double addRigidPlaneForces(const ModelConstants& c, const Vec2* poly, int
         Vec2 strip_a[kMaxSlabVertices], strip[kMaxSlabVertices];  // n + 1, then n + 2 vertices
         const int na = clipPolygonByHalfPlane(poly, n, 0.0, -1.0, -y0, strip_a);
         const int nb = na >= 3 ? clipPolygonByHalfPlane(strip_a, na, 0.0, 1.0, y1, strip) : 0;
-        const SlabPenetration pen = slabPenetration(strip, nb, z_low, fmin(z_high, c.structure_top_z), face);
+        const SlabPenetration pen = slabPenetration(strip, nb, z_low, minOf(z_high, c.structure_top_z), face);
         const PlaneContactForce f = addPlaneContact(pen, face, c.structure, m, mass, inertia, area, 0.0, fx, fy, fz, tz);
         const int slot = s.panel_count++;
         s.fx[slot] = -f.fx; s.fy[slot] = -f.fy; s.fz[slot] = -f.fz;
@@ -176,25 +187,16 @@ TIS_HD CellStepResult stepCell(int k, const ModelConstants& c, const CellStepInp
                                double pusher_velocity, double runaway_speed, const CellMotion& reference,
                                CellMotion& motion, StructureContact& structure) {
   const CellMotion m = motion;
-  const Vec2 centre = {m.x, m.y};
   double fx = 0.0, fy = 0.0, fz = 0.0, tz = 0.0;
   for (int e = in.bond_offsets[k]; e < in.bond_offsets[k + 1]; ++e) {
     const int b = in.bond_entries[e] >> 1;
-    const BondForce& f = in.bond_force[b];
-    if (in.bond_broken[b] && !f.breaks) continue;  // a bond that broke in this step still acts
-    const bool is_j = (in.bond_entries[e] & 1) != 0;
-    const double sign = is_j ? 1.0 : -1.0;
-    const Vec2 force = sign * f.force_on_j;
-    fx += force.x; fy += force.y; fz += sign * f.fz_on_j;
-    tz += cross(is_j ? f.arm_j : f.arm_i, force);
+    if (in.bond_state[b] == kBondBroken) continue;  // kBondBreaking: its last force still acts
+    addPairLoad(in.bond_load[b], (in.bond_entries[e] & 1) != 0, fx, fy, fz, tz);
   }
   for (int e = in.contact_offsets[k]; e < in.contact_offsets[k + 1]; ++e) {
-    const PairForce& f = in.contact_force[in.contact_entries[e] >> 1];
-    if (!f.touching) continue;
-    const double sign = (in.contact_entries[e] & 1) ? 1.0 : -1.0;
-    const Vec2 force = sign * f.force_on_j;
-    fx += force.x; fy += force.y; fz += sign * f.fz_on_j;
-    tz += cross(f.point - centre, force);
+    const int p = in.contact_entries[e] >> 1;
+    if (!in.contact_touching[p]) continue;
+    addPairLoad(in.contact_load[p], (in.contact_entries[e] & 1) != 0, fx, fy, fz, tz);
   }
   const double mass = in.mass[k], inertia = in.inertia[k], area = in.area[k];
   const WaterForce w = waterForce(c.water, mass, area, inertia / (mass / area), m.z, {m.vx, m.vy}, m.vz, m.wz);
@@ -244,8 +246,8 @@ TIS_HD Vec2 placeCell(const CellMotion& m, const double* vertex_x, const double*
   for (int v = 0; v < count; ++v) {
     const Vec2 w = Vec2{m.x, m.y} + rotate(Vec2{vertex_x[v], vertex_y[v]}, cs, sn);
     world[v] = w;
-    x0 = fmin(x0, w.x); x1 = fmax(x1, w.x);
-    y0 = fmin(y0, w.y); y1 = fmax(y1, w.y);
+    x0 = minOf(x0, w.x); x1 = maxOf(x1, w.x);
+    y0 = minOf(y0, w.y); y1 = maxOf(y1, w.y);
   }
   box[0] = x0; box[1] = x1; box[2] = y0; box[3] = y1;
   return {cs, sn};

@@ -25,6 +25,7 @@
 
 #include "thin_ice_sim/physics/friction.hpp"
 #include "thin_ice_sim/physics/host_device.hpp"
+#include "thin_ice_sim/physics/scalar.hpp"
 #include "thin_ice_sim/physics/polygon_clip.hpp"
 #include "thin_ice_sim/physics/smoothing.hpp"
 #include "thin_ice_sim/physics/vec2.hpp"
@@ -68,6 +69,20 @@ struct PairForce {
   bool touching;      ///< S > 0
 };
 
+/// What the per-cell gather needs of one pair's force, a contact's or a bond's, stored per pair
+/// and step (40 bytes, where the full force records are 56 and 88: the gather is memory-bound).
+struct PairLoad {
+  Vec2 force_on_j;     ///< [N] horizontal force on j; i gets the opposite
+  double fz_on_j;      ///< [N] vertical force on j; i gets the opposite
+  double torque_on_i;  ///< [N m] yaw moment of -force_on_j about i's centroid
+  double torque_on_j;  ///< [N m] yaw moment of force_on_j about j's centroid
+};
+
+/// The load of a contact force on cells centred at centre_i and centre_j (the moments of Eq. 4).
+TIS_HD PairLoad contactLoad(const PairForce& f, Vec2 centre_i, Vec2 centre_j) {
+  return {f.force_on_j, f.fz_on_j, cross(f.point - centre_i, -f.force_on_j), cross(f.point - centre_j, f.force_on_j)};
+}
+
 /// Inverse effective mass [1/kg] of a slip at `point` of body b: 1/m + |r|^2/I (an upper bound
 /// of the exact 1/m + (r x t)^2/I for any slip direction t).
 TIS_HD double inverseSlipMass(const BodyState& b, Vec2 point) {
@@ -87,7 +102,7 @@ TIS_HD PairForce demContactForce(const PolygonOverlap& overlap, const BodyState&
   f.touching = overlap.area > 0.0;
   f.reference_area = 0.0;  // apart: the next touch starts from no overlap
   if (!f.touching) return f;
-  f.reference_area = reference_area < 0.0 ? overlap.area : fmin(reference_area, overlap.area);
+  f.reference_area = reference_area < 0.0 ? overlap.area : minOf(reference_area, overlap.area);
   const double area = overlap.area - f.reference_area;  // S - S_ref >= 0 [m^2]
 
   const double h = c.thickness;
@@ -104,12 +119,12 @@ TIS_HD PairForce demContactForce(const PolygonOverlap& overlap, const BodyState&
   // Eq. (1) x h^3 with the contact face h high replaced by the vertical overlap Z of Eq. (2):
   // two slabs at different heights touch over Z, not h (equal at dz = 0); the depth is the
   // shallower of S/L and Z. Damping of stiffness k = K_n E' Z.
-  const double overlap_z = fmax(0.0, h - fabs(dz));
+  const double overlap_z = maxOf(0.0, h - fabs(dz));
   const double stiffness_h = k_h * c.plane_modulus * overlap_z;
-  const double depth = fmin(area / overlap.chord_length, overlap_z);
+  const double depth = minOf(area / overlap.chord_length, overlap_z);
   double normal = stiffness_h * depth;
   normal -= 2.0 * c.damping_ratio * sqrt(stiffness_h * reduced_mass) * approach;
-  normal = fmin(fmax(normal, 0.0), c.crushing_strength * overlap_z * overlap.chord_length);
+  normal = minOf(maxOf(normal, 0.0), c.crushing_strength * overlap_z * overlap.chord_length);
 
   // Eqs. (2)-(3), with damping of stiffness K_v E_v' S / h.
   const double stiffness_v = k_v * c.vertical_modulus * area / h;

@@ -7,6 +7,7 @@
 #include <math.h>
 
 #include "thin_ice_sim/physics/host_device.hpp"
+#include "thin_ice_sim/physics/scalar.hpp"
 
 namespace thin_ice {
 
@@ -17,7 +18,7 @@ namespace thin_ice {
 TIS_HD double frictionScale(double mu, double normal_force, double slip_x, double slip_y,
                             double slip_z, double regularisation_speed, double max_scale) {
   const double speed = sqrt(slip_x * slip_x + slip_y * slip_y + slip_z * slip_z);
-  return fmin(mu * normal_force / fmax(speed, regularisation_speed), max_scale);
+  return minOf(mu * normal_force / maxOf(speed, regularisation_speed), max_scale);
 }
 
 }  // namespace thin_ice

@@ -16,6 +16,7 @@
 
 #include "thin_ice_sim/physics/friction.hpp"
 #include "thin_ice_sim/physics/host_device.hpp"
+#include "thin_ice_sim/physics/scalar.hpp"
 #include "thin_ice_sim/physics/polygon_clip.hpp"
 #include "thin_ice_sim/physics/vec2.hpp"
 
@@ -91,8 +92,8 @@ TIS_HD SlabPenetration slabPenetration(const Vec2* poly, int n, double z_low, do
     double area, ax, ay;
     cutAreaAndMoments(poly, n, 0.0, 0.0, 1.0, area, ax, ay);
     double lo = z_low, hi = z_high;
-    if (plane.mz > 0.0) hi = fmin(hi, plane.offset / plane.mz);
-    else lo = fmax(lo, plane.offset / plane.mz);
+    if (plane.mz > 0.0) hi = minOf(hi, plane.offset / plane.mz);
+    else lo = maxOf(lo, plane.offset / plane.mz);
     if (!(hi > lo)) return r;
     r.volume = area * (hi - lo);
     r.centroid = {ax / area, ay / area};

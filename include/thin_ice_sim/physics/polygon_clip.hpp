@@ -25,6 +25,7 @@
 #include <math.h>
 
 #include "thin_ice_sim/physics/host_device.hpp"
+#include "thin_ice_sim/physics/scalar.hpp"
 #include "thin_ice_sim/physics/vec2.hpp"
 
 namespace thin_ice {
@@ -68,7 +69,7 @@ struct PairGrid {
 TIS_HD PairGrid makePairGrid(double x0, double x1, double y0, double y1) {
   PairGrid g;
   g.origin = {0.5 * (x0 + x1), 0.5 * (y0 + y1)};
-  const double half_extent = fmax(0.5 * (x1 - x0), 0.5 * (y1 - y0));
+  const double half_extent = maxOf(0.5 * (x1 - x0), 0.5 * (y1 - y0));
   if (!(half_extent > 0.0) || !isfinite(half_extent)) {
     g.scale = 0.0;
     g.step = 0.0;
@@ -121,17 +122,17 @@ TIS_HD PolygonOverlap intersectOrdered(const Vec2* first, int n_first, const Vec
   // Bounding boxes: reject early, and the union box sets the grid.
   double fx0 = first[0].x, fx1 = first[0].x, fy0 = first[0].y, fy1 = first[0].y;
   for (int k = 1; k < n_first; ++k) {
-    fx0 = fmin(fx0, first[k].x); fx1 = fmax(fx1, first[k].x);
-    fy0 = fmin(fy0, first[k].y); fy1 = fmax(fy1, first[k].y);
+    fx0 = minOf(fx0, first[k].x); fx1 = maxOf(fx1, first[k].x);
+    fy0 = minOf(fy0, first[k].y); fy1 = maxOf(fy1, first[k].y);
   }
   double sx0 = second[0].x, sx1 = second[0].x, sy0 = second[0].y, sy1 = second[0].y;
   for (int k = 1; k < n_second; ++k) {
-    sx0 = fmin(sx0, second[k].x); sx1 = fmax(sx1, second[k].x);
-    sy0 = fmin(sy0, second[k].y); sy1 = fmax(sy1, second[k].y);
+    sx0 = minOf(sx0, second[k].x); sx1 = maxOf(sx1, second[k].x);
+    sy0 = minOf(sy0, second[k].y); sy1 = maxOf(sy1, second[k].y);
   }
   if (fx1 <= sx0 || sx1 <= fx0 || fy1 <= sy0 || sy1 <= fy0) return emptyOverlap();
 
-  const PairGrid grid = makePairGrid(fmin(fx0, sx0), fmax(fx1, sx1), fmin(fy0, sy0), fmax(fy1, sy1));
+  const PairGrid grid = makePairGrid(minOf(fx0, sx0), maxOf(fx1, sx1), minOf(fy0, sy0), maxOf(fy1, sy1));
   if (!(grid.scale > 0.0)) return emptyOverlap();
   const Vec2 origin = grid.origin;
   const double scale = grid.scale;
@@ -139,7 +140,7 @@ TIS_HD PolygonOverlap intersectOrdered(const Vec2* first, int n_first, const Vec
 
   GridPoint clip[kMaxPolygonVertices];
   for (int k = 0; k < n_second; ++k) {
-    clip[k] = {llround((second[k].x - origin.x) * scale), llround((second[k].y - origin.y) * scale)};
+    clip[k] = {llrint((second[k].x - origin.x) * scale), llrint((second[k].y - origin.y) * scale)};
   }
   // Working polygon, and for each vertex k the owner of the edge k -> k+1
   // (0: boundary of `first`, 1: boundary of `second`).
@@ -147,7 +148,7 @@ TIS_HD PolygonOverlap intersectOrdered(const Vec2* first, int n_first, const Vec
   unsigned char owner[kClipCapacity];
   int count = n_first;
   for (int k = 0; k < n_first; ++k) {
-    poly[k] = {llround((first[k].x - origin.x) * scale), llround((first[k].y - origin.y) * scale)};
+    poly[k] = {llrint((first[k].x - origin.x) * scale), llrint((first[k].y - origin.y) * scale)};
     owner[k] = 0;
   }
 
@@ -172,15 +173,15 @@ TIS_HD PolygonOverlap intersectOrdered(const Vec2* first, int n_first, const Vec
         }
         if (sp > 0 && sq < 0 && out < kClipCapacity) {
           const double t = static_cast<double>(sp) / (static_cast<double>(sp) - static_cast<double>(sq));
-          next_poly[out] = {p.x + llround(t * static_cast<double>(q.x - p.x)),
-                            p.y + llround(t * static_cast<double>(q.y - p.y))};
+          next_poly[out] = {p.x + llrint(t * static_cast<double>(q.x - p.x)),
+                            p.y + llrint(t * static_cast<double>(q.y - p.y))};
           next_owner[out] = 1;  // leaves along the clip line
           ++out;
         }
       } else if (sq > 0 && out < kClipCapacity) {
         const double t = static_cast<double>(sp) / (static_cast<double>(sp) - static_cast<double>(sq));
-        next_poly[out] = {p.x + llround(t * static_cast<double>(q.x - p.x)),
-                          p.y + llround(t * static_cast<double>(q.y - p.y))};
+        next_poly[out] = {p.x + llrint(t * static_cast<double>(q.x - p.x)),
+                          p.y + llrint(t * static_cast<double>(q.y - p.y))};
         next_owner[out] = owner[k];  // re-enters along the clipped edge p->q
         ++out;
       }
@@ -275,10 +276,10 @@ TIS_HD PolygonOverlap intersectConvexPolygons(const Vec2* a, int na, const Vec2*
 TIS_HD double integerGridStep(const Vec2* a, int na, const Vec2* b, int nb) {
   double x0 = a[0].x, x1 = a[0].x, y0 = a[0].y, y1 = a[0].y;
   for (int k = 0; k < na; ++k) {
-    x0 = fmin(x0, a[k].x); x1 = fmax(x1, a[k].x); y0 = fmin(y0, a[k].y); y1 = fmax(y1, a[k].y);
+    x0 = minOf(x0, a[k].x); x1 = maxOf(x1, a[k].x); y0 = minOf(y0, a[k].y); y1 = maxOf(y1, a[k].y);
   }
   for (int k = 0; k < nb; ++k) {
-    x0 = fmin(x0, b[k].x); x1 = fmax(x1, b[k].x); y0 = fmin(y0, b[k].y); y1 = fmax(y1, b[k].y);
+    x0 = minOf(x0, b[k].x); x1 = maxOf(x1, b[k].x); y0 = minOf(y0, b[k].y); y1 = maxOf(y1, b[k].y);
   }
   return polygon_clip_detail::makePairGrid(x0, x1, y0, y1).step;
 }
