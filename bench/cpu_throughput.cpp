@@ -2,11 +2,13 @@
 // integration, loads) for an intact bonded sheet and for a broken field, at several sizes and
 // thread counts. Prints a Markdown table on stdout.
 //   thin_ice_bench_cpu --scenario FILE [--cells N]... [--threads T]... [--sheet intact|broken]...
-//                      [--cell-steps S]
+//                      [--cell-steps S] [--rebuild-each-step]
 // Each case: a square-ish sheet of about N cells cut from FILE's ice (structure and walls moved
 // out of the way), 20 warm-up steps, then enough steps for about S cell-steps (default 3e7).
 // "broken": flexural and compressive strength set to 1 Pa, so every bond breaks in the first
 // warm-up step and the field is held together by DEM contacts only.
+#include <sys/resource.h>
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -20,13 +22,21 @@
 
 namespace {
 
+/// Peak resident set of this process so far [bytes] (Linux reports kilobytes).
+double peakResidentBytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return 1024.0 * static_cast<double>(usage.ru_maxrss);
+}
+
 struct Case {
   long cells;
   bool broken;
   int threads;
 };
 
-std::vector<std::string> sheetOverrides(const thin_ice::Params& p, long cells, bool broken, int threads) {
+std::vector<std::string> sheetOverrides(const thin_ice::Params& p, long cells, bool broken, int threads,
+                                        bool rebuild_each_step) {
   const double area = static_cast<double>(cells) * p.sheet.cell_size * p.sheet.cell_size;
   const double width = std::sqrt(area / 2.0), length = 2.0 * width;  // 2:1 strip
   std::vector<std::string> o = {
@@ -35,6 +45,8 @@ std::vector<std::string> sheetOverrides(const thin_ice::Params& p, long cells, b
       "channel.width=" + std::to_string(width), "numerics.threads=" + std::to_string(threads),
       // The critical step depends on the largest cell of each mesh: 4e-6 s is stable for all sizes.
       "numerics.time_step=4e-6", "numerics.critical_step_safety=0.95"};
+  // Algorithm 1's rebuild at every step: the difference to the normal run is the rebuild's cost.
+  if (rebuild_each_step) o.push_back("numerics.max_steps_between_rebuilds=1");
   if (broken) {
     o.push_back("ice.flexural_strength=1");
     o.push_back("ice.compressive_strength=1");
@@ -50,9 +62,20 @@ int main(int argc, char** argv) {
   std::vector<long> sizes;
   std::vector<int> threads;
   std::vector<bool> sheets;  // broken?
+  bool rebuild_each_step = false;
   double cell_steps = 3e7;
-  for (int k = 1; k + 1 < argc; k += 2) {
-    const std::string flag = argv[k], value = argv[k + 1];
+  for (int k = 1; k < argc; k += 2) {
+    const std::string flag = argv[k];
+    if (flag == "--rebuild-each-step") {
+      rebuild_each_step = true;
+      --k;
+      continue;
+    }
+    if (k + 1 >= argc) {
+      std::fprintf(stderr, "flag %s needs a value\n", flag.c_str());
+      return 2;
+    }
+    const std::string value = argv[k + 1];
     if (flag == "--scenario") scenario_path = value;
     else if (flag == "--cells") sizes.push_back(std::atol(value.c_str()));
     else if (flag == "--threads") threads.push_back(std::atoi(value.c_str()));
@@ -66,7 +89,7 @@ int main(int argc, char** argv) {
   if (scenario_path.empty()) {
     std::fprintf(stderr,
                  "usage: thin_ice_bench_cpu --scenario FILE [--cells N]... [--threads T]... "
-                 "[--sheet intact|broken]... [--cell-steps S]\n");
+                 "[--sheet intact|broken]... [--cell-steps S] [--rebuild-each-step]\n");
     return 2;
   }
   if (sizes.empty()) sizes = {1000, 10000, 100000};
@@ -74,12 +97,13 @@ int main(int argc, char** argv) {
   if (sheets.empty()) sheets = {false, true};
   try {
     const thin_ice::Params base = thin_ice::loadScenario(scenario_path).params;
-    std::printf("| cells | sheet | threads | steps | wall [s] | cell-steps/s | ns per cell-step |\n");
-    std::printf("|---:|---|---:|---:|---:|---:|---:|\n");
+    const double resident_at_start = peakResidentBytes();
+    std::printf("| cells | sheet | threads | steps | wall [s] | cell-steps/s | ns per cell-step | peak memory per cell [B] |\n");
+    std::printf("|---:|---|---:|---:|---:|---:|---:|---:|\n");
     for (long n : sizes) {
       for (bool broken : sheets) {
         for (int t : threads) {
-          const thin_ice::Scenario s = thin_ice::loadScenario(scenario_path, sheetOverrides(base, n, broken, t));
+          const thin_ice::Scenario s = thin_ice::loadScenario(scenario_path, sheetOverrides(base, n, broken, t, rebuild_each_step));
           thin_ice::Simulation sim(s, thin_ice::BackendKind::kCpu);
           sim.step(20);
           const long steps = std::max(20L, static_cast<long>(cell_steps / sim.cellCount()));
@@ -87,8 +111,13 @@ int main(int argc, char** argv) {
           sim.step(steps);
           const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
           const double rate = static_cast<double>(sim.cellCount()) * steps / wall;
-          std::printf("| %d | %s | %d | %ld | %.2f | %.3g | %.0f |\n", sim.cellCount(),
-                      broken ? "broken field" : "intact, bonded", t, steps, wall, rate, 1e9 / rate);
+          // Growth of the process's peak resident set since start, per cell: an upper bound of what
+          // a cell costs (it includes the sheet generation's temporaries).
+          const double memory = (peakResidentBytes() - resident_at_start) / sim.cellCount();
+          std::printf("| %d | %s | %d | %ld | %.2f | %.3g | %.0f | %.0f |\n", sim.cellCount(),
+                      broken ? (rebuild_each_step ? "broken field, rebuilt every step" : "broken field")
+                             : (rebuild_each_step ? "intact, rebuilt every step" : "intact, bonded"),
+                      t, steps, wall, rate, 1e9 / rate, memory);
           std::fflush(stdout);
           if (!sim.healthy()) std::fprintf(stderr, "warning: %s\n", sim.lastError().c_str());
         }

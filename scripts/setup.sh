@@ -23,7 +23,7 @@ THIN_ICE_APT_PACKAGES="catkin ros-message-generation ros-message-runtime \
   python3-visualization-msgs python3-tf2-msgs python3-tf2-ros tf2-tools python3-numpy \
   python3-yaml python3-matplotlib \
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libyaml-cpp-dev libboost-dev \
-  googletest libgtest-dev libbenchmark-dev cmake g++ make"
+  googletest libgtest-dev libbenchmark-dev libnanoflann-dev cmake g++ make"
 
 thin_ice_install() {
   local missing
