@@ -1,0 +1,61 @@
+// Regression of the validation (issue #6): a short stretch of series M-2 on the CPU whose load
+// statistics must stay within stated tolerances of committed values (test/data/regression_M-2.yaml,
+// where the run, the tolerances and their measured basis are written down).
+#include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "thin_ice_sim/built_backends.hpp"
+#include "thin_ice_sim/load_statistics.hpp"
+#include "thin_ice_sim/scenario.hpp"
+#include "thin_ice_sim/simulation.hpp"
+
+namespace thin_ice {
+namespace {
+
+const std::string kSource = THIN_ICE_SOURCE_DIR;
+
+TEST(ValidationRegression, ShortM2StretchKeepsItsLoadStatistics) {
+  registerBuiltBackends();
+  const YAML::Node spec = YAML::LoadFile(kSource + "/test/data/regression_M-2.yaml");
+  std::vector<std::string> overrides;
+  for (const YAML::Node& o : spec["overrides"]) overrides.push_back(o.as<std::string>());
+  Simulation sim(loadScenario(kSource + "/" + spec["scenario"].as<std::string>(), overrides), BackendKind::kCpu);
+
+  const int rows = spec["rows"].as<int>();
+  const long steps_per_row = spec["steps_per_row"].as<long>();
+  std::vector<double> length, load;
+  for (int r = 0; r < rows; ++r) {
+    sim.step(steps_per_row);
+    ASSERT_TRUE(sim.healthy()) << sim.lastError();
+    length.push_back(sim.loads().pushed_length);
+    load.push_back(sim.loads().horizontal_calibrated);
+  }
+  const LoadStatistics s = analyseLoadHistory(length, load);
+  const int broken = sim.loads().broken_bonds;
+
+  std::ostringstream measured;
+  measured.precision(10);
+  measured << "measured:\n  peak_load_N: " << s.peak_load << "\n  phase1_slope_N_per_m: " << s.phase1_slope
+           << "\n  tail_mean_N: " << s.steady_mean << "\n  broken_bonds: " << broken << "\n";
+  std::cout << measured.str();
+
+  const YAML::Node expected = spec["expected"], tolerance = spec["tolerance"];
+  auto relative = [](double value, double reference) { return std::fabs(value - reference) / std::fabs(reference); };
+  EXPECT_LE(relative(s.peak_load, expected["peak_load_N"].as<double>()), tolerance["peak_load"].as<double>())
+      << measured.str();
+  EXPECT_LE(relative(s.phase1_slope, expected["phase1_slope_N_per_m"].as<double>()),
+            tolerance["phase1_slope"].as<double>())
+      << measured.str();
+  EXPECT_LE(relative(s.steady_mean, expected["tail_mean_N"].as<double>()), tolerance["tail_mean"].as<double>())
+      << measured.str();
+  EXPECT_LE(std::abs(broken - expected["broken_bonds"].as<int>()), tolerance["broken_bonds"].as<int>())
+      << measured.str();
+}
+
+}  // namespace
+}  // namespace thin_ice
