@@ -2,7 +2,7 @@
 """Builds bench/RESULTS.md and its PNG plots from the raw output that scripts/bench collected in
 one run directory (every figure in the report comes from that one run on one machine):
 
-  cpu_<N>.md          thin_ice_bench_cpu tables, one process per sheet size N
+  cpu_<N>.md          thin_ice_bench tables, one process per sheet size N (gpu_<N>.md: --backend cuda)
   rebuild_<N>.md      the same sheet with a contact rebuild at every step (Algorithm 1, N_iter = 1)
   kernels.json        thin_ice_bench_kernels (Google Benchmark JSON)
   liggghts.log        LIGGGHTS output of the 3-D DEM comparison, liggghts.json its set-up
@@ -49,11 +49,12 @@ def fit_exponent(xs, ys):
 
 def cpu_section(run, out, lines):
     rows = []
-    for path in sorted(glob.glob(os.path.join(run, "cpu_*.md")), key=lambda p: int(re.findall(r"\d+", p)[-1])):
+    paths = glob.glob(os.path.join(run, "cpu_*.md")) + glob.glob(os.path.join(run, "gpu_*.md"))
+    for path in sorted(paths, key=lambda p: (os.path.basename(p)[:3], int(re.findall(r"\d+", p)[-1]))):
         rows += read_table(path)
     if not rows:
         return
-    lines += ["## CPU throughput and scaling (whole time step)", "",
+    lines += ["## Throughput and scaling (whole time step)", "",
               "M-2 ice (h = 0.051 m, E = 328 MPa), 0.2 m cells, dt = 4e-6 s; a 2:1 sheet of about the given",
               "number of cells, kept away from the structure. \"broken field\": every bond broken in the first",
               "warm-up step (strengths set to 1 Pa), held together by DEM contacts only. Memory: growth of the",
@@ -65,15 +66,15 @@ def cpu_section(run, out, lines):
     # Scaling: time per step against cells, per (sheet, threads).
     series = {}
     for r in rows:
-        key = (r["sheet"], int(r["threads"]))
+        key = (r["sheet"], r["backend"], r["threads"])
         cells, rate = int(r["cells"]), float(r["cell-steps/s"])
         series.setdefault(key, []).append((cells, cells / rate))
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
     lines += ["Fitted exponent p of the time per step, t ~ N^p, over the sizes measured:", ""]
-    for (sheet, threads), pts in sorted(series.items()):
+    for (sheet, backend, threads), pts in sorted(series.items()):
         pts.sort()
         xs, ts = [p[0] for p in pts], [p[1] for p in pts]
-        label = f"{sheet}, {threads} thread{'s' if threads > 1 else ''}"
+        label = f"{sheet}, {backend}" + ("" if threads == "-" else f", {threads} thread{'s' if threads != '1' else ''}")
         ax1.loglog(xs, ts, "o-", label=label)
         ax2.semilogx(xs, [x / t for x, t in zip(xs, ts)], "o-", label=label)
         if len(xs) >= 2:
@@ -89,35 +90,35 @@ def cpu_section(run, out, lines):
     ax2.legend(fontsize=7)
     fig.suptitle("thin_ice_sim CPU backend: scaling with the number of cells")
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "cpu_scaling.png"), dpi=110)
+    fig.savefig(os.path.join(out, "scaling.png"), dpi=110)
     plt.close(fig)
-    lines += ["![CPU scaling](cpu_scaling.png)", ""]
+    lines += ["![Scaling](scaling.png)", ""]
 
 
 def rebuild_section(run, lines):
     normal = {}
     for path in glob.glob(os.path.join(run, "cpu_*.md")):
         for r in read_table(path):
-            normal[(int(r["cells"]), r["sheet"], int(r["threads"]))] = r
+            normal[(int(r["cells"]), r["sheet"], r["backend"], r["threads"])] = r
     out = []
     for path in sorted(glob.glob(os.path.join(run, "rebuild_*.md")), key=lambda p: int(re.findall(r"\d+", p)[-1])):
         for r in read_table(path):
-            cells, threads = int(r["cells"]), int(r["threads"])
+            cells, backend, threads = int(r["cells"]), r["backend"], r["threads"]
             base_sheet = "intact, bonded" if r["sheet"].startswith("intact") else "broken field"
-            base = normal.get((cells, base_sheet, threads))
+            base = normal.get((cells, base_sheet, backend, threads))
             if base is None:
                 continue
             t_every = float(r["wall [s]"]) / int(r["steps"])
             t_base = float(base["wall [s]"]) / int(base["steps"])
-            out.append(f"| {cells} | {base_sheet} | {threads} | {1e3 * t_base:.3f} | {1e3 * t_every:.3f} | "
+            out.append(f"| {cells} | {base_sheet} | {backend} | {threads} | {1e3 * t_base:.3f} | {1e3 * t_every:.3f} | "
                        f"{1e3 * (t_every - t_base):.3f} | {(t_every - t_base) / t_base:.2f} |")
     if out:
         lines += ["## Cost of one contact rebuild", "",
                   "The same sheet run with a rebuild at every step (N_iter = 1) and with the scenario's N_iter;",
                   "the difference of the step times is one rebuild (neighbour search, bond filter, S_ref carried,",
                   "incidence lists).", "",
-                  "| cells | sheet | threads | step [ms] | step with rebuild [ms] | rebuild [ms] | rebuild / step |",
-                  "|---:|---|---:|---:|---:|---:|---:|"] + out + [""]
+                  "| cells | sheet | backend | threads | step [ms] | step with rebuild [ms] | rebuild [ms] | rebuild / step |",
+                  "|---:|---|---|---:|---:|---:|---:|---:|"] + out + [""]
 
 
 def kernels_section(run, lines):

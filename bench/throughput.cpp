@@ -1,8 +1,8 @@
-// CPU throughput benchmark: cell-steps per second of the whole time step (all forces, contacts,
+// Throughput benchmark: cell-steps per second of the whole time step (all forces, contacts,
 // integration, loads) for an intact bonded sheet and for a broken field, at several sizes and
 // thread counts. Prints a Markdown table on stdout.
-//   thin_ice_bench_cpu --scenario FILE [--cells N]... [--threads T]... [--sheet intact|broken]...
-//                      [--cell-steps S] [--rebuild-each-step]
+//   thin_ice_bench --scenario FILE [--cells N]... [--threads T]... [--sheet intact|broken]...
+//                      [--cell-steps S] [--rebuild-each-step] [--backend cpu|cuda]
 // Each case: a square-ish sheet of about N cells cut from FILE's ice (structure and walls moved
 // out of the way), 20 warm-up steps, then enough steps for about S cell-steps (default 3e7).
 // "broken": flexural and compressive strength set to 1 Pa, so every bond breaks in the first
@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -63,6 +64,7 @@ int main(int argc, char** argv) {
   std::vector<int> threads;
   std::vector<bool> sheets;  // broken?
   bool rebuild_each_step = false;
+  std::string backend_name = "cpu";
   double cell_steps = 3e7;
   for (int k = 1; k < argc; k += 2) {
     const std::string flag = argv[k];
@@ -80,6 +82,7 @@ int main(int argc, char** argv) {
     else if (flag == "--cells") sizes.push_back(std::atol(value.c_str()));
     else if (flag == "--threads") threads.push_back(std::atoi(value.c_str()));
     else if (flag == "--cell-steps") cell_steps = std::atof(value.c_str());
+    else if (flag == "--backend") backend_name = value;
     else if (flag == "--sheet" && (value == "intact" || value == "broken")) sheets.push_back(value == "broken");
     else {
       std::fprintf(stderr, "unknown flag %s\n", flag.c_str());
@@ -88,23 +91,27 @@ int main(int argc, char** argv) {
   }
   if (scenario_path.empty()) {
     std::fprintf(stderr,
-                 "usage: thin_ice_bench_cpu --scenario FILE [--cells N]... [--threads T]... "
-                 "[--sheet intact|broken]... [--cell-steps S] [--rebuild-each-step]\n");
+                 "usage: thin_ice_bench --scenario FILE [--cells N]... [--threads T]... "
+                 "[--sheet intact|broken]... [--cell-steps S] [--rebuild-each-step] [--backend cpu|cuda]\n");
     return 2;
   }
   if (sizes.empty()) sizes = {1000, 10000, 100000};
   if (threads.empty()) threads = {1, 2};
   if (sheets.empty()) sheets = {false, true};
   try {
+    const thin_ice::BackendKind backend = thin_ice::parseBackendKind(backend_name, "--backend");
+    if (backend == thin_ice::BackendKind::kAuto) throw std::invalid_argument("--backend auto: name cpu or cuda");
+    // The thread count means nothing on the GPU: one run per case there.
+    if (backend == thin_ice::BackendKind::kCuda) threads = {1};
     const thin_ice::Params base = thin_ice::loadScenario(scenario_path).params;
     const double resident_at_start = peakResidentBytes();
-    std::printf("| cells | sheet | threads | steps | wall [s] | cell-steps/s | ns per cell-step | peak memory per cell [B] |\n");
-    std::printf("|---:|---|---:|---:|---:|---:|---:|---:|\n");
+    std::printf("| cells | sheet | backend | threads | steps | wall [s] | cell-steps/s | ns per cell-step | peak host memory per cell [B] |\n");
+    std::printf("|---:|---|---|---:|---:|---:|---:|---:|---:|\n");
     for (long n : sizes) {
       for (bool broken : sheets) {
         for (int t : threads) {
           const thin_ice::Scenario s = thin_ice::loadScenario(scenario_path, sheetOverrides(base, n, broken, t, rebuild_each_step));
-          thin_ice::Simulation sim(s, thin_ice::BackendKind::kCpu);
+          thin_ice::Simulation sim(s, backend);
           sim.step(20);
           const long steps = std::max(20L, static_cast<long>(cell_steps / sim.cellCount()));
           const auto t0 = std::chrono::steady_clock::now();
@@ -114,17 +121,18 @@ int main(int argc, char** argv) {
           // Growth of the process's peak resident set since start, per cell: an upper bound of what
           // a cell costs (it includes the sheet generation's temporaries).
           const double memory = (peakResidentBytes() - resident_at_start) / sim.cellCount();
-          std::printf("| %d | %s | %d | %ld | %.2f | %.3g | %.0f | %.0f |\n", sim.cellCount(),
+          const std::string thread_text = backend == thin_ice::BackendKind::kCuda ? "-" : std::to_string(t);
+          std::printf("| %d | %s | %s | %s | %ld | %.2f | %.3g | %.3g | %.0f |\n", sim.cellCount(),
                       broken ? (rebuild_each_step ? "broken field, rebuilt every step" : "broken field")
                              : (rebuild_each_step ? "intact, rebuilt every step" : "intact, bonded"),
-                      t, steps, wall, rate, 1e9 / rate, memory);
+                      backend_name.c_str(), thread_text.c_str(), steps, wall, rate, 1e9 / rate, memory);
           std::fflush(stdout);
           if (!sim.healthy()) std::fprintf(stderr, "warning: %s\n", sim.lastError().c_str());
         }
       }
     }
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "thin_ice_bench_cpu: %s\n", e.what());
+    std::fprintf(stderr, "thin_ice_bench: %s\n", e.what());
     return 1;
   }
   return 0;
