@@ -143,8 +143,10 @@ class NodeInterfaceTest(unittest.TestCase):
     def test_04_bad_commands_are_clamped_or_dropped(self):
         self.send(5.0, 0.5)
         self.assertAlmostEqual(self.latest_status().pusher_velocity, 0.5, delta=1e-9)  # ~max_pusher_speed
-        self.send(float("nan"), 0.5)
-        self.send(float("inf"), 0.3)
+        # Dropped commands do not feed the ~cmd_timeout watchdog (1 s here), so the check below
+        # must come well inside 1 s of the last valid command: 0.1 + 0.2 + 0.2 + 0.1 s.
+        self.send(float("nan"), 0.2)
+        self.send(float("inf"), 0.2)
         self.assertAlmostEqual(self.latest_status().pusher_velocity, 0.5, delta=1e-9)  # dropped
         self.send(-5.0, 0.3)
         self.assertAlmostEqual(self.latest_status().pusher_velocity, -0.5, delta=1e-9)
