@@ -105,13 +105,19 @@ int main(int argc, char** argv) {
     if (backend == thin_ice::BackendKind::kCuda) threads = {1};
     const thin_ice::Params base = thin_ice::loadScenario(scenario_path).params;
     const double resident_at_start = peakResidentBytes();
-    std::printf("| cells | sheet | backend | threads | steps | wall [s] | cell-steps/s | ns per cell-step | peak host memory per cell [B] |\n");
-    std::printf("|---:|---|---|---:|---:|---:|---:|---:|---:|\n");
+    // The table header waits for the first simulation, so that a backend that cannot start (no
+    // GPU) leaves only its error and no half table.
+    bool header_printed = false;
     for (long n : sizes) {
       for (bool broken : sheets) {
         for (int t : threads) {
           const thin_ice::Scenario s = thin_ice::loadScenario(scenario_path, sheetOverrides(base, n, broken, t, rebuild_each_step));
           thin_ice::Simulation sim(s, backend);
+          if (!header_printed) {
+            std::printf("| cells | sheet | backend | threads | steps | wall [s] | cell-steps/s | ns per cell-step | peak host memory per cell [B] |\n");
+            std::printf("|---:|---|---|---:|---:|---:|---:|---:|---:|\n");
+            header_printed = true;
+          }
           sim.step(20);
           const long steps = std::max(20L, static_cast<long>(cell_steps / sim.cellCount()));
           const auto t0 = std::chrono::steady_clock::now();
