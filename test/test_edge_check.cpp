@@ -1,0 +1,103 @@
+// The edge-load check (thin_ice_sim/edge_check.hpp) against closed forms worked out by hand.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "thin_ice_sim/edge_check.hpp"
+
+namespace {
+
+using thin_ice::BondConstants;
+using thin_ice::BondRest;
+
+// A bond across a 0.2 m edge between cells 0.2 m apart, with only its vertical spring set.
+BondRest verticalBond(double k_vertical) {
+  BondRest b{};
+  b.anchor_i = {0.1, 0.0};
+  b.anchor_j = {-0.1, 0.0};
+  b.normal = {1.0, 0.0};
+  b.edge_length = 0.2;
+  b.distance = 0.2;
+  b.k_normal = 1e7;
+  b.k_shear = 1e7;
+  b.k_vertical = k_vertical;
+  return b;
+}
+
+BondConstants constants(double exponent_v, double sigma_f) {
+  BondConstants c{};
+  c.thickness = 0.05;
+  c.exponent_h = exponent_v;
+  c.exponent_v = exponent_v;
+  c.flexural_strength = sigma_f;
+  c.compressive_strength = 1e9;
+  c.compression_coupling = 0.4;
+  c.bending_stress = true;
+  return c;
+}
+
+TEST(EdgeCheck, MediumBondTearsThroughAtItsShearPeak) {
+  // n = 1: F_v = (1 - dz/h) k_v dz peaks at dz = h/2 at k_v h / 4. k_v = 1e5 N/m, h = 0.05 m:
+  // 1250 N. The bending stress there, 3 F_v d / (L_e h^2) = 3 * 1250 * 0.2 / (0.2 * 0.0025) =
+  // 1.5e6 Pa, stays below sigma_f = 2e6 Pa, so the bond only goes at |dz| = h.
+  const auto cap = thin_ice::bondVerticalCapacity(verticalBond(1e5), constants(1.0, 2e6));
+  EXPECT_NEAR(cap.force, 1250.0, 1250.0 * 1e-6);
+  EXPECT_FALSE(cap.by_stress);
+  EXPECT_DOUBLE_EQ(cap.offset, 0.05);
+}
+
+TEST(EdgeCheck, StrongBondBreaksWhenTheBendingStressReachesSigmaF) {
+  // n = 1/2, k_v = 1e6 N/m: sigma_v = 3 k_v dz sqrt(1 - dz/h) d / (L_e h^2) reaches
+  // sigma_f = 1e6 Pa at dz/h = z with 3 z sqrt(1 - z) * 1e6 * 0.05 * 0.2 / (0.2 * 0.0025) = 1e6,
+  // i.e. z sqrt(1 - z) = 1/60: z = 0.0168085 (solved numerically). The force then is sigma_f L_e h^2 / (3 d) =
+  // 1e6 * 0.2 * 0.0025 / 0.6 = 833.33 N.
+  const auto cap = thin_ice::bondVerticalCapacity(verticalBond(1e6), constants(0.5, 1e6));
+  EXPECT_TRUE(cap.by_stress);
+  EXPECT_NEAR(cap.force, 833.3333, 1e-3);
+  EXPECT_NEAR(cap.offset / 0.05, 0.0168085, 1e-6);
+}
+
+TEST(EdgeCheck, FloatingPlateOfMediumIce) {
+  // M-2 ice: E = 328 MPa, h = 0.051 m, nu = 0.3, sigma_f = 108 kPa, rho_w g = 9810 N/m^3.
+  // l = (328e6 * 0.051^3 / (12 * 0.91 * 9810))^(1/4) = 0.7983 m;
+  // P_crit = 0.665 * 108e3 * (9810 * 0.051^5 / 328e6)^(1/4) = 128.72 N/m (SPEC-NOTES: M ~ 126).
+  thin_ice::IceParams ice;
+  ice.thickness = 0.051;
+  ice.youngs_modulus = 328e6;
+  ice.poisson_ratio = 0.3;
+  ice.flexural_strength = 108e3;
+  thin_ice::WaterParams water;
+  water.density = 1000.0;
+  water.gravity = 9.81;
+  const auto plate = thin_ice::floatingPlateEdge(ice, water);
+  EXPECT_NEAR(plate.characteristic_length, 0.79831, 1e-4);
+  EXPECT_NEAR(plate.critical_line_load, 128.723, 1e-2);
+}
+
+TEST(EdgeCheck, ACutThroughASquareGridFailsAtTheSumOfItsBonds) {
+  // A 1 m x 0.4 m sheet of unjittered 0.2 m squares: two rows of five cells. A cut 0.2 m (and
+  // 0.4 m) from the front edge crosses the two bonds between neighbouring columns, each with
+  // L_e = d = 0.2 m. With the default ice (E_v = E = 328 MPa, so sigma_v can reach sigma_f) each
+  // fails by Eq. (13) at F_v = sigma_f L_e h^2 / (3 d) = 108e3 * 0.051^2 / 3 = 93.64 N, and the
+  // cut carries 2 * 93.636 / 0.4 = 468.18 N per metre of edge.
+  thin_ice::Params p;
+  p.sheet.length = 1.0;
+  p.sheet.width = 0.4;
+  p.sheet.cell_size = 0.2;
+  p.sheet.jitter = 0.0;
+  p.sheet.lloyd_iterations = 0;
+  p.numerics.time_step = 1e-7;
+  const thin_ice::IceSheet sheet = thin_ice::generateIceSheet(p.sheet);
+  const thin_ice::Model model = thin_ice::buildModel(p, sheet, "test");
+  const auto cuts = thin_ice::edgeCutCapacities(model, sheet, 2);
+  ASSERT_EQ(cuts.size(), 2u);
+  for (const auto& cut : cuts) {
+    EXPECT_EQ(cut.bonds, 2);
+    EXPECT_EQ(cut.failing_by_stress, 2);
+    EXPECT_NEAR(cut.line_load, 468.18, 0.01);
+  }
+  EXPECT_DOUBLE_EQ(cuts[0].distance_from_edge, 0.2);
+  EXPECT_DOUBLE_EQ(cuts[1].distance_from_edge, 0.4);
+}
+
+}  // namespace
