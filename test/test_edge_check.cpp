@@ -32,7 +32,7 @@ BondConstants constants(double exponent_v, double sigma_f) {
   c.flexural_strength = sigma_f;
   c.compressive_strength = 1e9;
   c.compression_coupling = 0.4;
-  c.bending_stress = true;
+  c.vertical_stress = thin_ice::kVerticalBending;
   return c;
 }
 
@@ -98,6 +98,26 @@ TEST(EdgeCheck, ACutThroughASquareGridFailsAtTheSumOfItsBonds) {
   }
   EXPECT_DOUBLE_EQ(cuts[0].distance_from_edge, 0.2);
   EXPECT_DOUBLE_EQ(cuts[1].distance_from_edge, 0.4);
+}
+
+TEST(EdgeCheck, ThePlateReadingBreaksAStraightEdgeAtPcrit) {
+  // The same grid with sigma_v = 6 |F_v| e^(-pi/4) l / (L_e h^2): each bond fails at
+  // F_v = sigma_f L_e h^2 / (6 e^(-pi/4) l), so the cut carries sigma_f h^2 / (6 e^(-pi/4) l) per
+  // metre = 108e3 * 0.051^2 / (6 * 0.455938 * 0.798313) = 128.63 N/m, the plate's P_crit
+  // (0.665 of SPEC-NOTES is e^(pi/4) (12 (1 - nu^2))^(1/4) / 6 = 0.6645 rounded: 128.72).
+  thin_ice::Params p;
+  p.sheet.length = 1.0;
+  p.sheet.width = 0.4;
+  p.sheet.cell_size = 0.2;
+  p.sheet.jitter = 0.0;
+  p.sheet.lloyd_iterations = 0;
+  p.ice.vertical_stress = thin_ice::VerticalStressModel::kPlate;
+  p.numerics.time_step = 1e-7;
+  const thin_ice::IceSheet sheet = thin_ice::generateIceSheet(p.sheet);
+  const thin_ice::Model model = thin_ice::buildModel(p, sheet, "test");
+  const auto cut = thin_ice::edgeCutCapacities(model, sheet, 1).at(0);
+  EXPECT_EQ(cut.failing_by_stress, 2);
+  EXPECT_NEAR(cut.line_load, 128.627, 0.01);
 }
 
 }  // namespace

@@ -309,7 +309,7 @@ TEST_F(ScenarioFileTest, WrongTypes) {
   expectError("non-bool.yaml", withValue(quick_, "bottom", "enabled", "maybe"),
               {"bottom.enabled", "expected true or false", "'maybe'"});
   expectError("bad-enum.yaml", withValue(quick_, "ice", "vertical_stress", "torsion"),
-              {"ice.vertical_stress", "expected shear or bending", "'torsion'"});
+              {"ice.vertical_stress", "expected shear, bending or plate", "'torsion'"});
   expectError("bad-layout.yaml", withValue(quick_, "sheet", "layout", "hexagonal"),
               {"sheet.layout", "expected jittered_grid or poisson_disk"});
 }

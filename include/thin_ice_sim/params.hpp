@@ -13,6 +13,7 @@ namespace thin_ice {
 enum class VerticalStressModel {
   kShear,    ///< sigma_v = |F_v| / (h L_e): the paper's "force over the bond section"
   kBending,  ///< sigma_v = 6 M / (L_e h^2), M = |F_v| d_ij / 2: clamped-beam bending (SPEC-NOTES)
+  kPlate,    ///< sigma_v = 6 M / (L_e h^2), M = |F_v| e^(-pi/4) l: the floating plate's moment arm
 };
 
 struct IceParams {

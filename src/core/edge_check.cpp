@@ -53,10 +53,10 @@ BondVerticalCapacity bondVerticalCapacity(const BondRest& rest, const BondConsta
 }
 
 FloatingPlateEdge floatingPlateEdge(const IceParams& ice, const WaterParams& water) {
-  const double h = ice.thickness, E = ice.youngs_modulus, nu = ice.poisson_ratio;
+  const double h = ice.thickness, E = ice.youngs_modulus;
   const double foundation = water.density * water.gravity;  // rho_w g [N/m^3]
   FloatingPlateEdge plate;
-  plate.characteristic_length = std::pow(E * h * h * h / (12.0 * (1.0 - nu * nu) * foundation), 0.25);
+  plate.characteristic_length = floatingPlateLength(E, ice.poisson_ratio, h, water.density, water.gravity);
   plate.critical_line_load = 0.665 * ice.flexural_strength * std::pow(foundation * std::pow(h, 5) / E, 0.25);
   return plate;
 }

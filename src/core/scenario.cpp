@@ -5,7 +5,7 @@
 // a map whose keys are the snake_case field names of the matching struct in params.hpp
 // (IceParams, IceSheetSpec, WaterParams, BottomParams, StructureParams, PusherParams,
 // ChannelParams, NumericsParams), plus an optional top-level `description:` text.
-//   Enums:    ice.vertical_stress: shear | bending;  sheet.layout: jittered_grid | poisson_disk
+//   Enums:    ice.vertical_stress: shear | bending | plate;  sheet.layout: jittered_grid | poisson_disk
 //   Integers: structure.panels, sheet.lloyd_iterations, numerics.max_steps_between_rebuilds,
 //             numerics.threads (signed), sheet.seed (unsigned 64 bit); decimal digits only.
 //   Booleans: bottom.enabled, channel.enabled (true/false; yaml-cpp also takes yes/no, on/off).
@@ -119,6 +119,7 @@ VerticalStressModel toVerticalStress(const YAML::Node& n) {
   const std::string& s = plainScalar(n);
   if (s == "shear") return VerticalStressModel::kShear;
   if (s == "bending") return VerticalStressModel::kBending;
+  if (s == "plate") return VerticalStressModel::kPlate;
   throw BadValue(describe(n));
 }
 
@@ -181,7 +182,7 @@ const std::vector<Section>& sections() {
         number(&P::ice, &IceParams::smoothing_exponent_h, "smoothing_exponent_h", kRequired),
         number(&P::ice, &IceParams::smoothing_exponent_v, "smoothing_exponent_v", kRequired),
         number(&P::ice, &IceParams::compression_coupling, "compression_coupling", kRequired),
-        field(&P::ice, &IceParams::vertical_stress, "vertical_stress", "shear or bending",
+        field(&P::ice, &IceParams::vertical_stress, "vertical_stress", "shear, bending or plate",
               toVerticalStress, kRequired),
         number(&P::ice, &IceParams::friction_ice_ice, "friction_ice_ice"),
         number(&P::ice, &IceParams::contact_damping_ratio, "contact_damping_ratio"),

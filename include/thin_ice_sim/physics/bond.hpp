@@ -8,7 +8,8 @@
 //             k_n = E h L_e / d, k_s = G h L_e / d, k_v = G_v h L_e / d (bar of section h L_e)
 //   Eq. (13)  broken for good when sigma_v > sigma_f - k sigma_c, or sigma_h > sigma_f, or
 //             sigma_c > sigma_comp; sigma_h = F_h/(h L_e), sigma_c = max(0, -F_h)/(h L_e), sigma_v
-//             from F_v by the chosen model (shear: |F_v|/(h L_e); bending: 6 M/(L_e h^2), M = |F_v| d/2)
+//             from F_v by the chosen reading (shear: |F_v|/(h L_e); bending: 6 M/(L_e h^2), M = |F_v| d/2;
+//             plate: 6 M/(L_e h^2), M = |F_v| e^(-pi/4) l, the floating plate's largest moment)
 // Damping (ratio zeta of critical) acts on the anchor velocities; stresses use the elastic forces.
 #pragma once
 
@@ -38,6 +39,23 @@ struct BondRest {
   double damping_vertical;
 };
 
+/// How sigma_v of Eq. (13) is read from the vertical bond force F_v (SPEC-NOTES, "RMIB bonds").
+enum VerticalStressReading : int {
+  kVerticalShear = 0,    ///< |F_v| / (h L_e): the paper's "force over the bond section"
+  kVerticalBending = 1,  ///< 6 M / (L_e h^2), M = |F_v| d / 2: a clamped beam between the centroids
+  kVerticalPlate = 2,    ///< 6 M / (L_e h^2), M = |F_v| e^(-pi/4) l: the moment arm of a floating
+                         ///< plate under an edge load (its largest moment, at 1.11 l), so that a
+                         ///< free edge fails at the plate's P_crit (docs/validation/calibration.md)
+};
+
+/// Characteristic length l = [E h^3 / (12 (1 - nu^2) rho_w g)]^(1/4) [m] of a floating plate.
+inline double floatingPlateLength(double youngs_modulus, double poisson_ratio, double thickness,
+                                  double water_density, double gravity) {
+  return pow(youngs_modulus * thickness * thickness * thickness /
+                 (12.0 * (1.0 - poisson_ratio * poisson_ratio) * water_density * gravity),
+             0.25);
+}
+
 struct BondConstants {
   double thickness;             ///< h [m]
   double exponent_h;            ///< n of K_n [-]
@@ -45,7 +63,8 @@ struct BondConstants {
   double flexural_strength;     ///< sigma_f [Pa]
   double compressive_strength;  ///< sigma_comp [Pa]
   double compression_coupling;  ///< k of Eq. (13) [-]
-  bool bending_stress;          ///< sigma_v from the clamped-beam moment (true) or F_v/(h L_e)
+  int vertical_stress;          ///< a VerticalStressReading
+  double plate_moment_arm;      ///< e^(-pi/4) l [m], used by kVerticalPlate
 };
 
 struct BondForce {
@@ -69,11 +88,14 @@ TIS_HD PairLoad bondLoad(const BondForce& f) {
   return {f.force_on_j, f.fz_on_j, cross(f.arm_i, -f.force_on_j), cross(f.arm_j, f.force_on_j)};
 }
 
-/// Bending or shear reading of sigma_v (SPEC-NOTES, "RMIB bonds").
+/// sigma_v of Eq. (13) in the scenario's reading (VerticalStressReading).
 TIS_HD double verticalBondStress(double vertical_force, const BondRest& b, const BondConstants& c) {
   const double h = c.thickness;
-  if (c.bending_stress) return 3.0 * fabs(vertical_force) * b.distance / (b.edge_length * h * h);
-  return fabs(vertical_force) / (h * b.edge_length);
+  switch (c.vertical_stress) {
+    case kVerticalBending: return 3.0 * fabs(vertical_force) * b.distance / (b.edge_length * h * h);
+    case kVerticalPlate: return 6.0 * fabs(vertical_force) * c.plate_moment_arm / (b.edge_length * h * h);
+    default: return fabs(vertical_force) / (h * b.edge_length);
+  }
 }
 
 /// Eq. (13) with the pure-compression limit of SPEC-NOTES, and torn through when the cells are
