@@ -242,7 +242,7 @@ BondRest unitBond() {
   return b;
 }
 
-BondConstants bondLaw(double coupling, bool bending) { return {0.05, 1.0, 1.0, 100e3, 130e3, coupling, bending}; }
+BondConstants bondLaw(double coupling) { return {0.05, 1.0, 1.0, 100e3, 130e3, coupling, kVerticalBending, 0.0}; }
 
 TEST(Bond, PulledApartItBreaksAtTheFlexuralStrength) {
   // sigma_h = k_n u / (h L_e) = sigma_f at u = sigma_f h L_e / k_n = 1e5 * 0.01 / 1.5e7 = 6.667e-5 m.
@@ -251,7 +251,7 @@ TEST(Bond, PulledApartItBreaksAtTheFlexuralStrength) {
   for (const double factor : {0.99, 1.01}) {
     const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
     const BodyState j = {{0.2 + factor * u_fail, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-    const BondForce f = rmibBondForce(b, i, kNoTurn, j, kNoTurn, bondLaw(0.0, true));
+    const BondForce f = rmibBondForce(b, i, kNoTurn, j, kNoTurn, bondLaw(0.0));
     EXPECT_NEAR(f.sigma_h, factor * 100e3, 1e-6 * 100e3);
     EXPECT_NEAR(f.force_on_j.x, -b.k_normal * factor * u_fail, 1e-6);  // pulls j back
     EXPECT_EQ(f.breaks, factor > 1.0);
@@ -274,7 +274,7 @@ TEST(Bond, VerticalOffsetBreaksAtEquation13WithAndWithoutCompression) {
     const double dz = offsetFor(factor * 100e3);
     const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
     const BodyState j = {{0.2, 0.0}, dz, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-    EXPECT_EQ(rmibBondForce(b, i, kNoTurn, j, kNoTurn, bondLaw(0.5, true)).breaks, factor > 1.0);
+    EXPECT_EQ(rmibBondForce(b, i, kNoTurn, j, kNoTurn, bondLaw(0.5)).breaks, factor > 1.0);
   }
   // Compressed to sigma_c = 40 kPa with k = 0.5: threshold 100 - 20 = 80 kPa.
   const double squeeze = 40e3 * h * b.edge_length / b.k_normal;
@@ -283,7 +283,7 @@ TEST(Bond, VerticalOffsetBreaksAtEquation13WithAndWithoutCompression) {
     // K_n also falls with the offset: compress a little more so that sigma_c is 40 kPa.
     const double dz = offsetFor(factor * 80e3);
     const BodyState j = {{0.2 - squeeze / (1.0 - dz / h), 0.0}, dz, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-    const BondForce f = rmibBondForce(b, i, kNoTurn, j, kNoTurn, bondLaw(0.5, true));
+    const BondForce f = rmibBondForce(b, i, kNoTurn, j, kNoTurn, bondLaw(0.5));
     EXPECT_NEAR(f.sigma_c, 40e3, 1e-6 * 40e3);
     EXPECT_EQ(f.breaks, factor > 1.0) << "factor " << factor;
   }
@@ -294,12 +294,28 @@ TEST(Bond, TornThroughWhenTheCellsAreOffsetByTheWholeThickness) {
   // no face any more; the bond breaks. Just below h, unstressed otherwise, it holds.
   const BondRest b = unitBond();
   const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-  BondConstants law = bondLaw(0.0, true);
+  BondConstants law = bondLaw(0.0);
   law.flexural_strength = 1e12;  // only the offset can break it here
   const BodyState level_with_h = {{0.2, 0.0}, 0.05, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
   const BodyState below_h = {{0.2, 0.0}, 0.0499, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
   EXPECT_TRUE(rmibBondForce(b, i, kNoTurn, level_with_h, kNoTurn, law).breaks);
   EXPECT_FALSE(rmibBondForce(b, i, kNoTurn, below_h, kNoTurn, law).breaks);
+}
+
+TEST(Bond, TheThreeReadingsOfTheVerticalStress) {
+  // F_v = 100 N on the unit bond (h = 0.05 m, L_e = 0.2 m, d = 0.2 m):
+  //   shear   100 / (0.05 * 0.2) = 1e4 Pa;
+  //   bending 6 (100 * 0.1) / (0.2 * 0.0025) = 1.2e5 Pa (arm d/2);
+  //   plate   6 (100 * 0.3) / (0.2 * 0.0025) = 3.6e5 Pa (arm 0.3 m given).
+  const BondRest b = unitBond();
+  BondConstants law = bondLaw(0.0);
+  law.plate_moment_arm = 0.3;
+  law.vertical_stress = kVerticalShear;
+  EXPECT_NEAR(verticalBondStress(-100.0, b, law), 1e4, 1e-6);
+  law.vertical_stress = kVerticalBending;
+  EXPECT_NEAR(verticalBondStress(-100.0, b, law), 1.2e5, 1e-5);
+  law.vertical_stress = kVerticalPlate;
+  EXPECT_NEAR(verticalBondStress(-100.0, b, law), 3.6e5, 1e-5);
 }
 
 TEST(Bond, RigidTurnOfThePairGivesNoForce) {
@@ -313,13 +329,13 @@ TEST(Bond, RigidTurnOfThePairGivesNoForce) {
   const Vec2 cj = anchor + rotate(Vec2{0.1, 0.0}, turn.x, turn.y);
   const BodyState i = {ci, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
   const BodyState j = {cj, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-  const BondForce f = rmibBondForce(b, i, turn, j, turn, bondLaw(0.0, true));
+  const BondForce f = rmibBondForce(b, i, turn, j, turn, bondLaw(0.0));
   EXPECT_NEAR(norm(f.force_on_j), 0.0, 1e-9);
   // A relative turn of j alone by 0.01 rad about its centroid shears the bond: force along y.
   const Vec2 small = {std::cos(0.01), std::sin(0.01)};
   const BodyState j0 = {{0.2, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
   const BodyState i0 = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-  const BondForce g = rmibBondForce(b, i0, kNoTurn, j0, small, bondLaw(0.0, true));
+  const BondForce g = rmibBondForce(b, i0, kNoTurn, j0, small, bondLaw(0.0));
   // The anchor of j moves by -0.1 * (cos 0.01 - 1, sin 0.01) ~ (5e-6, -1e-3): shear pulls j up.
   EXPECT_GT(g.force_on_j.y, 0.9 * b.k_shear * 0.1 * std::sin(0.01));
 }
