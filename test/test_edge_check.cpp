@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <vector>
 
 #include "thin_ice_sim/edge_check.hpp"
 
@@ -74,22 +75,27 @@ TEST(EdgeCheck, FloatingPlateOfMediumIce) {
   EXPECT_NEAR(plate.critical_line_load, 128.723, 1e-2);
 }
 
-TEST(EdgeCheck, ACutThroughASquareGridFailsAtTheSumOfItsBonds) {
-  // A 1 m x 0.4 m sheet of unjittered 0.2 m squares: two rows of five cells. A cut 0.2 m (and
-  // 0.4 m) from the front edge crosses the two bonds between neighbouring columns, each with
-  // L_e = d = 0.2 m. With the default ice (E_v = E = 328 MPa, so sigma_v can reach sigma_f) each
-  // fails by Eq. (13) at F_v = sigma_f L_e h^2 / (3 d) = 108e3 * 0.051^2 / 3 = 93.64 N, and the
-  // cut carries 2 * 93.636 / 0.4 = 468.18 N per metre of edge.
+// Cuts behind the front edge of a 1 m x 0.4 m sheet of unjittered 0.2 m squares (two rows of
+// five cells, default ice: E = E_v = 328 MPa, h = 0.051 m, sigma_f = 108 kPa): every cut crosses
+// the two bonds between neighbouring columns, each with L_e = d = 0.2 m.
+std::vector<thin_ice::EdgeCutCapacity> squareGridCuts(thin_ice::VerticalStressModel reading, int cuts) {
   thin_ice::Params p;
   p.sheet.length = 1.0;
   p.sheet.width = 0.4;
   p.sheet.cell_size = 0.2;
   p.sheet.jitter = 0.0;
   p.sheet.lloyd_iterations = 0;
+  p.ice.vertical_stress = reading;
   p.numerics.time_step = 1e-7;
   const thin_ice::IceSheet sheet = thin_ice::generateIceSheet(p.sheet);
-  const thin_ice::Model model = thin_ice::buildModel(p, sheet, "test");
-  const auto cuts = thin_ice::edgeCutCapacities(model, sheet, 2);
+  return thin_ice::edgeCutCapacities(thin_ice::buildModel(p, sheet, "test"), sheet, cuts);
+}
+
+TEST(EdgeCheck, ACutThroughASquareGridFailsAtTheSumOfItsBonds) {
+  // Bending reading (E_v = E, so sigma_v reaches sigma_f): each bond fails by Eq. (13) at
+  // F_v = sigma_f L_e h^2 / (3 d) = 108e3 * 0.051^2 / 3 = 93.64 N, and the cut carries
+  // 2 * 93.636 / 0.4 = 468.18 N per metre of edge.
+  const auto cuts = squareGridCuts(thin_ice::VerticalStressModel::kBending, 2);
   ASSERT_EQ(cuts.size(), 2u);
   for (const auto& cut : cuts) {
     EXPECT_EQ(cut.bonds, 2);
@@ -101,21 +107,11 @@ TEST(EdgeCheck, ACutThroughASquareGridFailsAtTheSumOfItsBonds) {
 }
 
 TEST(EdgeCheck, ThePlateReadingBreaksAStraightEdgeAtPcrit) {
-  // The same grid with sigma_v = 6 |F_v| e^(-pi/4) l / (L_e h^2): each bond fails at
+  // sigma_v = 6 |F_v| e^(-pi/4) l / (L_e h^2): each bond fails at
   // F_v = sigma_f L_e h^2 / (6 e^(-pi/4) l), so the cut carries sigma_f h^2 / (6 e^(-pi/4) l) per
   // metre = 108e3 * 0.051^2 / (6 * 0.455938 * 0.798313) = 128.63 N/m, the plate's P_crit
   // (0.665 of SPEC-NOTES is e^(pi/4) (12 (1 - nu^2))^(1/4) / 6 = 0.6645 rounded: 128.72).
-  thin_ice::Params p;
-  p.sheet.length = 1.0;
-  p.sheet.width = 0.4;
-  p.sheet.cell_size = 0.2;
-  p.sheet.jitter = 0.0;
-  p.sheet.lloyd_iterations = 0;
-  p.ice.vertical_stress = thin_ice::VerticalStressModel::kPlate;
-  p.numerics.time_step = 1e-7;
-  const thin_ice::IceSheet sheet = thin_ice::generateIceSheet(p.sheet);
-  const thin_ice::Model model = thin_ice::buildModel(p, sheet, "test");
-  const auto cut = thin_ice::edgeCutCapacities(model, sheet, 1).at(0);
+  const auto cut = squareGridCuts(thin_ice::VerticalStressModel::kPlate, 1).at(0);
   EXPECT_EQ(cut.failing_by_stress, 2);
   EXPECT_NEAR(cut.line_load, 128.627, 0.01);
 }
