@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "thin_ice_sim/backend.hpp"
 #include "thin_ice_sim/built_backends.hpp"
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/simulation.hpp"
@@ -112,10 +113,14 @@ int main(int argc, char** argv) {
       for (bool broken : sheets) {
         for (int t : threads) {
           const thin_ice::Scenario s = thin_ice::loadScenario(scenario_path, sheetOverrides(base, n, broken, t, rebuild_each_step));
+          // Device memory: what building and stepping this case adds on the GPU (cudaMemGetInfo).
+          const thin_ice::GpuBackendProvider* gpu = thin_ice::gpuBackendProvider();
+          const bool on_gpu = backend == thin_ice::BackendKind::kCuda && gpu != nullptr;
+          const double device_at_start = on_gpu ? gpu->device_memory_in_use() : 0.0;
           thin_ice::Simulation sim(s, backend);
           if (!header_printed) {
-            std::printf("| cells | sheet | backend | threads | steps | wall [s] | cell-steps/s | ns per cell-step | peak host memory per cell [B] |\n");
-            std::printf("|---:|---|---|---:|---:|---:|---:|---:|---:|\n");
+            std::printf("| cells | sheet | backend | threads | steps | wall [s] | cell-steps/s | ns per cell-step | peak host memory per cell [B] | device memory per cell [B] |\n");
+            std::printf("|---:|---|---|---:|---:|---:|---:|---:|---:|---:|\n");
             header_printed = true;
           }
           sim.step(20);
@@ -128,10 +133,12 @@ int main(int argc, char** argv) {
           // a cell costs (it includes the sheet generation's temporaries).
           const double memory = (peakResidentBytes() - resident_at_start) / sim.cellCount();
           const std::string thread_text = backend == thin_ice::BackendKind::kCuda ? "-" : std::to_string(t);
-          std::printf("| %d | %s | %s | %s | %ld | %.2f | %.3g | %.3g | %.0f |\n", sim.cellCount(),
+          char device_text[32] = "-";
+          if (on_gpu) std::snprintf(device_text, sizeof device_text, "%.0f", (gpu->device_memory_in_use() - device_at_start) / sim.cellCount());
+          std::printf("| %d | %s | %s | %s | %ld | %.2f | %.3g | %.3g | %.0f | %s |\n", sim.cellCount(),
                       broken ? (rebuild_each_step ? "broken field, rebuilt every step" : "broken field")
                              : (rebuild_each_step ? "intact, rebuilt every step" : "intact, bonded"),
-                      backend_name.c_str(), thread_text.c_str(), steps, wall, rate, 1e9 / rate, memory);
+                      backend_name.c_str(), thread_text.c_str(), steps, wall, rate, 1e9 / rate, memory, device_text);
           std::fflush(stdout);
           if (!sim.healthy()) std::fprintf(stderr, "warning: %s\n", sim.lastError().c_str());
         }

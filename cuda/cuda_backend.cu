@@ -425,7 +425,7 @@ std::string unavailableReason() {
 
 std::unique_ptr<Backend> makeBackend(const Model& model) { return std::make_unique<CudaBackend>(model); }
 
-const GpuBackendProvider kProvider = {unavailableReason, deviceDescription, makeBackend};
+const GpuBackendProvider kProvider = {unavailableReason, deviceDescription, makeBackend, deviceMemoryInUse};
 
 }  // namespace
 

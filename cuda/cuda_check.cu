@@ -33,5 +33,12 @@ std::string deviceDescription() {
   return out.str();
 }
 
+double deviceMemoryInUse() {
+  if (deviceCount() == 0) return 0.0;
+  size_t free_bytes = 0, total_bytes = 0;
+  TIS_CUDA_CHECK(cudaMemGetInfo(&free_bytes, &total_bytes));
+  return static_cast<double>(total_bytes - free_bytes);
+}
+
 }  // namespace cuda
 }  // namespace thin_ice

@@ -13,5 +13,8 @@ int deviceCount();
 /// "NAME (compute capability X.Y, N GiB)" of device 0, or an empty string without one.
 std::string deviceDescription();
 
+/// Bytes in use on device 0 (cudaMemGetInfo: total minus free); 0 without a device.
+double deviceMemoryInUse();
+
 }  // namespace cuda
 }  // namespace thin_ice

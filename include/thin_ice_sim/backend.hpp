@@ -42,6 +42,9 @@ struct GpuBackendProvider {
   /// One line naming the device ("NVIDIA H100 80GB HBM3, compute capability 9.0").
   std::string (*device_description)();
   std::unique_ptr<Backend> (*make)(const Model& model);
+  /// Bytes in use on the device (total minus free, all processes): benchmarks take the growth
+  /// across building and stepping a backend as its memory.
+  double (*device_memory_in_use)();
 };
 
 void setGpuBackendProvider(const GpuBackendProvider* provider);
