@@ -50,12 +50,17 @@ def row(name, s):
     series = re.match(r"[WMS]-\d", name)
     full = EXPERIMENT_LENGTH.get(series.group(0)) if series else None
     steady = "steady" if load.get("steady_found") else "tail mean, not steady"
+    # The phase-1 slope is fitted up to the steady-state window; without one it spans whatever the
+    # record holds (saw teeth of a short run) and is not the experiment's phase 1.
+    slope = load.get("phase1_slope_N_per_m")
+    slope_text = num(slope) if load.get("steady_found") else f"{num(slope)} (no steady state: not phase 1)"
+    slope_error = pct(slope, slope_ref) if load.get("steady_found") else "-"
     return (f"| {name} | {s.get('cells', '-')} | {s.get('structure_width_m', '-')} | {s.get('backend', '-')} | "
             f"{num(reached, '{:.2f}')} of {num(full, '{:.1f}')} | "
             f"{num(load.get('peak_N'))} | {num(exp.get('peak_N'))} | {pct(load.get('peak_N'), exp.get('peak_N'))} | "
             f"{num(load.get('steady_mean_N'))} ({steady}) | {num(exp.get('steady_mean_N'))} | "
             f"{pct(load.get('steady_mean_N'), exp.get('steady_mean_N'))} | "
-            f"{num(load.get('phase1_slope_N_per_m'))} | {num(slope_ref)} | {pct(load.get('phase1_slope_N_per_m'), slope_ref)} |")
+            f"{slope_text} | {num(slope_ref)} | {slope_error} |")
 
 
 def main():
