@@ -247,6 +247,13 @@ TEST(Scenario, ValidateParamsAcceptsDefaultsAndNamesTheSource) {
 
 // ----- Overrides and defaults -----------------------------------------------------------------
 
+TEST_F(ScenarioFileTest, EveryVerticalStressReadingParses) {
+  const std::string path = kScenarioDir + "quick.yaml";
+  EXPECT_EQ(loadScenario(path, {"ice.vertical_stress=bending"}).params.ice.vertical_stress, VerticalStressModel::kBending);
+  EXPECT_EQ(loadScenario(path, {"ice.vertical_stress=plate"}).params.ice.vertical_stress, VerticalStressModel::kPlate);
+  EXPECT_EQ(loadScenario(path, {"ice.vertical_stress=shear"}).params.ice.vertical_stress, VerticalStressModel::kShear);
+}
+
 TEST_F(ScenarioFileTest, OverridesApplyAfterTheFileAndChangeTheHash) {
   const std::string path = kScenarioDir + "quick.yaml";
   const Scenario base = loadScenario(path);

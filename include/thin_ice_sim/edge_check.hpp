@@ -15,15 +15,24 @@ namespace thin_ice {
 struct BondVerticalCapacity {
   double force = 0.0;       ///< [N] largest |F_v| before the bond fails
   double offset = 0.0;      ///< [m] dz at which it fails
+  double last_intact = 0.0; ///< [m] the largest dz found at which it still holds (just below offset)
   bool by_stress = false;   ///< Eq. (13) met (true), or torn through at |dz| = h (false)
 };
 
-/// Sweeps dz from 0 to h in `samples` steps through rmibBondForce.
+/// Sweeps dz from 0 to h in `samples` steps through rmibBondForce; the failure offset is then
+/// bisected, so that a bond that fails within the first step is not under-read.
 BondVerticalCapacity bondVerticalCapacity(const BondRest& rest, const BondConstants& constants, int samples = 4000);
+
+/// |F_v| [N] of the bond at a pure vertical offset dz [m] (no horizontal strain, at rest); `breaks`
+/// says whether Eq. (13) or the tear-through is met there.
+double bondVerticalForce(const BondRest& rest, const BondConstants& constants, double dz, bool& breaks);
 
 /// The floating semi-infinite plate of SPEC-NOTES: the characteristic length
 /// l = [E h^3 / (12 (1 - nu^2) rho_w g)]^(1/4) [m] and the edge line load at first failure
-/// P_crit = 0.665 sigma_f (rho_w g h^5 / E)^(1/4) [N/m] (the break about 1.1 l from the edge).
+/// P_crit = sigma_f h^2 / (6 e^(-pi/4) l) [N/m]: the largest moment under an edge load P is
+/// e^(-pi/4) P l, 1.11 l from the edge. For nu = 0.3 this is SPEC-NOTES'
+/// 0.665 sigma_f (rho_w g h^5 / E)^(1/4) (0.6645); written through l it stays consistent with the
+/// `plate` reading of sigma_v for any nu.
 struct FloatingPlateEdge {
   double characteristic_length = 0.0;  ///< l [m]
   double critical_line_load = 0.0;     ///< P_crit [N/m]
@@ -31,13 +40,18 @@ struct FloatingPlateEdge {
 FloatingPlateEdge floatingPlateEdge(const IceParams& ice, const WaterParams& water);
 
 /// A straight cut across the sheet, parallel to its front edge (x = x_min + length): the bonds
-/// whose cells lie on both sides carry all of a vertical line load applied beyond it, so the sum
-/// of their capacities over the sheet width is the line load at which the cut fails.
+/// whose cells lie on both sides carry all of a vertical line load applied beyond it. The part in
+/// front is taken as a rigid strip pushed down by a growing offset dz, the same for every bond;
+/// a bond that failed at a smaller offset carries nothing. The largest total force, over the
+/// width, is the line load at which the cut fails. Bonds that peak at the same offset (equal
+/// d with the `plate` reading; any d with `bending`, whose stress does not depend on d) give the
+/// sum of their peaks; otherwise they fail one after another and the cut carries less.
 struct EdgeCutCapacity {
   double distance_from_edge = 0.0;  ///< [m]
   int bonds = 0;                    ///< bonds crossing the cut
   int failing_by_stress = 0;        ///< of those, how many fail by Eq. (13) before tearing through
-  double line_load = 0.0;           ///< [N/m] sum of the bonds' capacities / sheet width
+  double line_load = 0.0;           ///< [N/m] the rigid strip's largest total force / sheet width
+  double sum_of_peaks = 0.0;        ///< [N/m] sum of each bond's own peak / width (an upper bound)
 };
 
 /// Cuts at 1, 2, ..., `cuts` cell sizes from the front edge.

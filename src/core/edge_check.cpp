@@ -5,38 +5,42 @@
 
 namespace thin_ice {
 
-BondVerticalCapacity bondVerticalCapacity(const BondRest& rest, const BondConstants& constants, int samples) {
-  if (samples < 2) throw std::invalid_argument("bondVerticalCapacity: samples must be >= 2");
+namespace {
+constexpr double kPi = 3.14159265358979323846;
+}  // namespace
+
+double bondVerticalForce(const BondRest& rest, const BondConstants& constants, double dz, bool& breaks) {
   // Cell i at the origin, cell j placed so that the two anchors coincide (no horizontal strain);
   // both at rest and unturned, so only the vertical spring of Eq. (12) is loaded.
   BodyState i{};
   BodyState j{};
   j.centroid = rest.anchor_i - rest.anchor_j;
+  j.z = dz;
   const Vec2 unturned{1.0, 0.0};
-  const auto force_at = [&](double dz, bool& breaks) {
-    j.z = dz;
-    const BondForce f = rmibBondForce(rest, i, unturned, j, unturned, constants);
-    breaks = f.breaks;
-    return std::fabs(f.fz_on_j);
-  };
+  const BondForce f = rmibBondForce(rest, i, unturned, j, unturned, constants);
+  breaks = f.breaks;
+  return std::fabs(f.fz_on_j);
+}
+
+BondVerticalCapacity bondVerticalCapacity(const BondRest& rest, const BondConstants& constants, int samples) {
+  if (samples < 2) throw std::invalid_argument("bondVerticalCapacity: samples must be >= 2");
   BondVerticalCapacity capacity;
   double intact_dz = 0.0;
   for (int s = 1; s <= samples; ++s) {
     const double dz = constants.thickness * s / samples;
     bool breaks = false;
-    const double force = force_at(dz, breaks);
+    const double force = bondVerticalForce(rest, constants, dz, breaks);
     if (!breaks) {
       capacity.force = std::fmax(capacity.force, force);
       intact_dz = dz;
       continue;
     }
-    // The threshold lies between the last intact sample and this one: bisect it, so that a bond
-    // that fails early (stiff E_v) is not under-read by a whole sampling step.
+    // The threshold lies between the last intact sample and this one: bisect it.
     double broken_dz = dz;
     for (int k = 0; k < 60; ++k) {
       const double mid = 0.5 * (intact_dz + broken_dz);
       bool mid_breaks = false;
-      const double mid_force = force_at(mid, mid_breaks);
+      const double mid_force = bondVerticalForce(rest, constants, mid, mid_breaks);
       if (mid_breaks) {
         broken_dz = mid;
       } else {
@@ -45,39 +49,62 @@ BondVerticalCapacity bondVerticalCapacity(const BondRest& rest, const BondConsta
       }
     }
     capacity.offset = broken_dz;
+    capacity.last_intact = intact_dz;
     capacity.by_stress = broken_dz < constants.thickness;
     return capacity;
   }
   capacity.offset = constants.thickness;  // |dz| = h always tears the bond (bondFails)
+  capacity.last_intact = intact_dz;
   return capacity;
 }
 
 FloatingPlateEdge floatingPlateEdge(const IceParams& ice, const WaterParams& water) {
-  const double h = ice.thickness, E = ice.youngs_modulus;
-  const double foundation = water.density * water.gravity;  // rho_w g [N/m^3]
+  const double h = ice.thickness;
   FloatingPlateEdge plate;
-  plate.characteristic_length = floatingPlateLength(E, ice.poisson_ratio, h, water.density, water.gravity);
-  plate.critical_line_load = 0.665 * ice.flexural_strength * std::pow(foundation * std::pow(h, 5) / E, 0.25);
+  plate.characteristic_length =
+      floatingPlateLength(ice.youngs_modulus, ice.poisson_ratio, h, water.density, water.gravity);
+  // sigma_f = 6 M_max / h^2 with M_max = e^(-pi/4) P l.
+  plate.critical_line_load = ice.flexural_strength * h * h / (6.0 * std::exp(-0.25 * kPi) * plate.characteristic_length);
   return plate;
 }
 
 std::vector<EdgeCutCapacity> edgeCutCapacities(const Model& model, const IceSheet& sheet, int cuts) {
+  const BondConstants& law = model.constants.bond;
   const double front = sheet.spec.x_min + sheet.spec.length;
   std::vector<BondVerticalCapacity> capacity(model.bond_rest.size());
-  for (size_t b = 0; b < capacity.size(); ++b) capacity[b] = bondVerticalCapacity(model.bond_rest[b], model.constants.bond);
+  for (size_t b = 0; b < capacity.size(); ++b) capacity[b] = bondVerticalCapacity(model.bond_rest[b], law);
+  constexpr int kSamples = 4000;  // common offsets of the rigid strip, 0 < dz < h
   std::vector<EdgeCutCapacity> out;
   for (int k = 1; k <= cuts; ++k) {
     EdgeCutCapacity cut;
     cut.distance_from_edge = k * sheet.spec.cell_size;
     const double x_cut = front - cut.distance_from_edge;
+    std::vector<size_t> crossing;
     for (size_t b = 0; b < capacity.size(); ++b) {
       const double xi = sheet.cells[model.bond_i[b]].centroid.x, xj = sheet.cells[model.bond_j[b]].centroid.x;
       if ((xi < x_cut) == (xj < x_cut)) continue;
-      ++cut.bonds;
+      crossing.push_back(b);
       if (capacity[b].by_stress) ++cut.failing_by_stress;
-      cut.line_load += capacity[b].force;
+      cut.sum_of_peaks += capacity[b].force;
     }
-    cut.line_load /= sheet.spec.width;
+    cut.bonds = static_cast<int>(crossing.size());
+    // The strip's offsets: a grid (for peaks inside the sweep) and each bond's last intact offset
+    // (for failures by stress, where a bond's force is largest).
+    std::vector<double> offsets;
+    for (int s = 1; s < kSamples; ++s) offsets.push_back(law.thickness * s / kSamples);
+    for (size_t b : crossing) offsets.push_back(capacity[b].last_intact);
+    double best = 0.0;
+    for (double dz : offsets) {
+      double total = 0.0;
+      for (size_t b : crossing) {
+        if (dz > capacity[b].last_intact) continue;  // failed at a smaller offset
+        bool breaks = false;
+        total += bondVerticalForce(model.bond_rest[b], law, dz, breaks);
+      }
+      best = std::fmax(best, total);
+    }
+    cut.line_load = best / sheet.spec.width;
+    cut.sum_of_peaks /= sheet.spec.width;
     out.push_back(cut);
   }
   return out;

@@ -1,7 +1,7 @@
 // thin_ice_edge_check: the edge-load check of SPEC-NOTES for one or more scenarios. Prints, as a
 // Markdown table, the vertical line load at which straight cuts near the sheet's front edge fail
-// (the bond law swept quasi-statically, thin_ice_sim/edge_check.hpp) beside the floating plate's
-// P_crit and characteristic length l.
+// (the bond law swept quasi-statically over a rigid strip, thin_ice_sim/edge_check.hpp) beside
+// the floating plate's P_crit and characteristic length l, and the sum of the bonds' own peaks.
 //   thin_ice_edge_check --scenario FILE [--scenario FILE]... [--set section.key=value]... [--cuts N]
 // Exit status: 0 done; 2 bad arguments or scenario.
 #include <algorithm>
@@ -50,8 +50,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "thin_ice_edge_check: --scenario is required\n%s", usage);
     return 2;
   }
-  std::printf("| scenario | l [m] | P_crit [N/m] | cut [m from edge] | bonds | failing by Eq. (13) | line load at failure [N/m] | / P_crit |\n");
-  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|\n");
+  std::printf("| scenario | l [m] | P_crit [N/m] | cut [m from edge] | bonds | failing by Eq. (13) | line load at failure [N/m] | / P_crit | sum of bond peaks [N/m] |\n");
+  std::printf("|---|---:|---:|---:|---:|---:|---:|---:|---:|\n");
   for (const std::string& path : scenarios) {
     try {
       const thin_ice::Scenario scenario = thin_ice::loadScenario(path, overrides);
@@ -60,9 +60,9 @@ int main(int argc, char** argv) {
       const thin_ice::Model model = thin_ice::buildModel(p, sheet, path);
       const thin_ice::FloatingPlateEdge plate = thin_ice::floatingPlateEdge(p.ice, p.water);
       for (const thin_ice::EdgeCutCapacity& cut : thin_ice::edgeCutCapacities(model, sheet, cuts)) {
-        std::printf("| %s | %.2f | %.0f | %.2f | %d | %d | %.0f | %.2f |\n", scenario.name.c_str(),
+        std::printf("| %s | %.2f | %.0f | %.2f | %d | %d | %.0f | %.2f | %.0f |\n", scenario.name.c_str(),
                     plate.characteristic_length, plate.critical_line_load, cut.distance_from_edge, cut.bonds,
-                    cut.failing_by_stress, cut.line_load, cut.line_load / plate.critical_line_load);
+                    cut.failing_by_stress, cut.line_load, cut.line_load / plate.critical_line_load, cut.sum_of_peaks);
       }
     } catch (const std::exception& e) {
       std::fprintf(stderr, "thin_ice_edge_check: %s\n", e.what());
