@@ -5,10 +5,6 @@
 
 namespace thin_ice {
 
-namespace {
-constexpr double kPi = 3.14159265358979323846;
-}  // namespace
-
 double bondVerticalForce(const BondRest& rest, const BondConstants& constants, double dz, bool& breaks) {
   // Cell i at the origin, cell j placed so that the two anchors coincide (no horizontal strain);
   // both at rest and unturned, so only the vertical spring of Eq. (12) is loaded.
@@ -63,8 +59,9 @@ FloatingPlateEdge floatingPlateEdge(const IceParams& ice, const WaterParams& wat
   FloatingPlateEdge plate;
   plate.characteristic_length =
       floatingPlateLength(ice.youngs_modulus, ice.poisson_ratio, h, water.density, water.gravity);
-  // sigma_f = 6 M_max / h^2 with M_max = e^(-pi/4) P l.
-  plate.critical_line_load = ice.flexural_strength * h * h / (6.0 * std::exp(-0.25 * kPi) * plate.characteristic_length);
+  // sigma_f = 6 M_max / h^2 with M_max = P x the plate's moment arm.
+  const double arm = floatingPlateMomentArm(ice.youngs_modulus, ice.poisson_ratio, h, water.density, water.gravity);
+  plate.critical_line_load = ice.flexural_strength * h * h / (6.0 * arm);
   return plate;
 }
 

@@ -43,9 +43,7 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
             ice.compressive_strength,
             ice.compression_coupling,
             verticalStressReading(ice.vertical_stress),
-            // e^(-pi/4) l: where an edge load P makes the floating plate's largest moment, 0.456 P l.
-            std::exp(-0.25 * kPi) *
-                floatingPlateLength(ice.youngs_modulus, ice.poisson_ratio, h, p.water.density, p.water.gravity)};
+            floatingPlateMomentArm(ice.youngs_modulus, ice.poisson_ratio, h, p.water.density, p.water.gravity)};
   c.water = {p.water.density,       p.water.gravity,        h, p.water.linear_drag,
              p.water.quadratic_drag, p.water.vertical_linear_drag, p.water.vertical_quadratic_drag};
   c.structure = {p.structure.stiffness, h, p.structure.friction, ice.contact_damping_ratio, regularisation, rate_limit};

@@ -56,6 +56,15 @@ inline double floatingPlateLength(double youngs_modulus, double poisson_ratio, d
              0.25);
 }
 
+/// Arm [m] of the floating plate's largest moment under an edge line load P: M_max = e^(-pi/4) P l,
+/// 1.11 l from the edge (semi-infinite beam on an elastic foundation). The `plate` reading of
+/// sigma_v and the edge check's P_crit = sigma_f h^2 / (6 arm) both take it from here.
+inline double floatingPlateMomentArm(double youngs_modulus, double poisson_ratio, double thickness,
+                                     double water_density, double gravity) {
+  const double e_minus_pi_over_4 = 0.45593812776599624;  // exp(-pi/4)
+  return e_minus_pi_over_4 * floatingPlateLength(youngs_modulus, poisson_ratio, thickness, water_density, gravity);
+}
+
 struct BondConstants {
   double thickness;             ///< h [m]
   double exponent_h;            ///< n of K_n [-]
