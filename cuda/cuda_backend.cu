@@ -310,6 +310,8 @@ class CudaBackend final : public Backend {
                                inertia_.get(),
                                area_.get(),
                                vertex_count_.get(),
+                               vertex_x_.get(),
+                               vertex_y_.get(),
                                world_.get(),
                                box_.get(),
                                bond_offsets_.get(),

@@ -193,7 +193,9 @@ TEST(Scenario, M2ReproducesTable5AndTable4) {
   expectNear(0.2, p.sheet.cell_size, "cell size");
   EXPECT_EQ(p.sheet.layout, SeedLayout::kJitteredGrid);
   EXPECT_EQ(p.sheet.seed, 1u);
-  expectNear(4.0e-6, p.numerics.time_step, "dt");  // below the critical step of the 1.7e11 Pa structure
+  // dt within the ice's critical step, the 1.7e11 Pa structure in five sub-steps of 5e-6 s
+  expectNear(2.5e-5, p.numerics.time_step, "dt");
+  EXPECT_EQ(p.numerics.structure_substeps, 5);
 }
 
 TEST(Scenario, S1ReproducesTable5) {
@@ -362,6 +364,8 @@ TEST_F(ScenarioFileTest, RangeChecksOnOtherSections) {
               {"ice.bond_damping_ratio = 1.5 is invalid", "allowed: [0, 1]"});
   expectError("toe.yaml", withValue(quick_, "structure", "toe_x", "2.0"),
               {"structure.toe_x = 2 is invalid", "allowed: >= 3 m"});
+  expectError("substeps.yaml", withValue(quick_, "numerics", "structure_substeps", "0"),
+              {"numerics.structure_substeps = 0 is invalid", "allowed: integer in [1, 1000]"});
 }
 
 TEST_F(ScenarioFileTest, DuplicateKey) {

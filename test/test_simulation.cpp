@@ -131,6 +131,21 @@ TEST(Simulation, UnstableTimeStepIsRefusedWithTheCriticalStep) {
   }
 }
 
+TEST(Simulation, TooFewStructureSubstepsAreRefusedWithTheLeastThatIsStable) {
+  // quick.yaml: dt 2.5e-5 s; the structure's critical step is 6.2e-6 s, so with safety 0.85 the
+  // sub-step must be <= 5.29e-6 s: five sub-steps, not four.
+  Scenario s = loadScenario(kQuick, {"numerics.structure_substeps=4"});
+  try {
+    Simulation sim(s, BackendKind::kCpu);
+    FAIL() << "a sub-step above the structure's critical step was accepted";
+  } catch (const ScenarioError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("numerics.structure_substeps = 4"), std::string::npos) << what;
+    EXPECT_NE(what.find("allowed: structure_substeps >= 5"), std::string::npos) << what;
+  }
+  EXPECT_NO_THROW(Simulation(loadScenario(kQuick, {"numerics.structure_substeps=5"}), BackendKind::kCpu));
+}
+
 TEST(Simulation, CudaBackendRequestFailsClearlyAndAutoFallsBackWithoutAGpu) {
   if (gpuMissing().empty()) {
     Simulation sim(shortStrip(0), BackendKind::kAuto);

@@ -27,7 +27,10 @@ TEST(ValidationRegression, ShortM2StretchKeepsItsLoadStatistics) {
   Simulation sim(loadScenario(kSource + "/" + spec["scenario"].as<std::string>(), overrides), BackendKind::kCpu);
 
   const int rows = spec["rows"].as<int>();
-  const long steps_per_row = spec["steps_per_row"].as<long>();
+  // Whole steps per row: the scenario's dt must divide the row interval.
+  const double steps = spec["row_interval_s"].as<double>() / sim.timeStep();
+  const long steps_per_row = std::lround(steps);
+  ASSERT_NEAR(steps, static_cast<double>(steps_per_row), 1e-6) << "dt " << sim.timeStep() << " s";
   std::vector<double> length, load;
   for (int r = 0; r < rows; ++r) {
     sim.step(steps_per_row);

@@ -32,15 +32,18 @@ struct Model {
   double initial_pusher_x = 0.0;        ///< [m]
   double initial_pusher_velocity = 0.0; ///< [m/s]
   ModelConstants constants{};
-  double critical_time_step = 0.0;      ///< [s] of the stiffest spring, damping included
+  double critical_time_step = 0.0;      ///< [s] of the stiffest spring stepped with dt, damping included
+  double structure_critical_time_step = 0.0;  ///< [s] with the structure's spring too (bounds dt/n)
 };
 
 /// Builds the model. Throws ScenarioError (numerics.time_step) when dt exceeds
-/// critical_step_safety x the critical time step.
+/// critical_step_safety x the critical time step, or (numerics.structure_substeps) when the
+/// sub-step dt/n does so with the structure's spring counted.
 Model buildModel(const Params& params, const IceSheet& sheet, const std::string& source);
 
-/// Critical time step [s] of the model's stiffest spring (bonds, contacts, structure, pusher),
-/// for symplectic Euler with damping ratio zeta: dt_c = (2 / omega_max)(sqrt(1 + zeta^2) - zeta).
-double criticalTimeStep(const Model& model, const Params& params);
+/// Critical time step [s] of the model's stiffest spring (bonds, contacts, pusher, walls, bottom,
+/// and the structure when with_structure), for symplectic Euler with damping ratio zeta:
+/// dt_c = (2 / omega_max)(sqrt(1 + zeta^2) - zeta).
+double criticalTimeStep(const Model& model, const Params& params, bool with_structure = true);
 
 }  // namespace thin_ice

@@ -77,7 +77,9 @@ class Simulation {
 
   double time() const;
   double timeStep() const;
-  double criticalTimeStep() const;  ///< [s] of the stiffest spring (for reports)
+  double criticalTimeStep() const;  ///< [s] of the stiffest spring stepped with dt (for reports)
+  int structureSubsteps() const;    ///< n: sub-steps of the structure contact per step
+  double structureCriticalTimeStep() const;  ///< [s] with the structure's spring, bounds dt/n
   double pushedLength() const;
   double pusherPosition() const;    ///< [m] x of the plate
   long stepCount() const;

@@ -232,6 +232,8 @@ class CpuBackend final : public Backend {
                                model_.inertia.data(),
                                model_.area.data(),
                                model_.vertex_count.data(),
+                               model_.vertex_x.data(),
+                               model_.vertex_y.data(),
                                world_.data(),
                                box_.data(),
                                bond_incidence_.offsets.data(),

@@ -46,7 +46,10 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
             floatingPlateMomentArm(ice.youngs_modulus, ice.poisson_ratio, h, p.water.density, p.water.gravity)};
   c.water = {p.water.density,       p.water.gravity,        h, p.water.linear_drag,
              p.water.quadratic_drag, p.water.vertical_linear_drag, p.water.vertical_quadratic_drag};
-  c.structure = {p.structure.stiffness, h, p.structure.friction, ice.contact_damping_ratio, regularisation, rate_limit};
+  // The structure's friction is integrated at the sub-step dt/n (cell_forces.hpp).
+  const double structure_rate_limit = rate_limit * p.numerics.structure_substeps;  // [1/s]
+  c.structure = {p.structure.stiffness, h, p.structure.friction, ice.contact_damping_ratio, regularisation,
+                 structure_rate_limit};
   c.pusher = {p.pusher.stiffness, h, 0.0, ice.contact_damping_ratio, regularisation, rate_limit};
   c.bottom = {p.bottom.stiffness, h, p.bottom.friction, ice.contact_damping_ratio, regularisation, rate_limit};
   c.wall = {p.channel.stiffness, h, p.channel.friction, ice.contact_damping_ratio, regularisation, rate_limit};
@@ -74,6 +77,7 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
     c.wall_x_start = p.structure.toe_x - p.structure.side_panel_length;
   }
   c.time_step = p.numerics.time_step;
+  c.structure_substeps = p.numerics.structure_substeps;
   c.mean_edge_length = computeStats(sheet).mean_edge_length;
   if (!(c.mean_edge_length > 0.0)) c.mean_edge_length = p.sheet.cell_size;
   c.rebuild_displacement = p.numerics.rebuild_displacement * c.mean_edge_length;
@@ -165,20 +169,35 @@ Model buildModel(const Params& params, const IceSheet& sheet, const std::string&
   }
   m.initial_pusher_x = params.sheet.x_min;
   m.initial_pusher_velocity = params.pusher.velocity;
-  m.critical_time_step = criticalTimeStep(m, params);
-  const double allowed = params.numerics.critical_step_safety * m.critical_time_step;
-  if (!(params.numerics.time_step <= allowed)) {
+  const NumericsParams& numerics = params.numerics;
+  const int substeps = numerics.structure_substeps;
+  // With sub-steps the structure's spring is integrated at dt/n and the rest at dt; the sub-step
+  // is checked against every spring at once (conservative: the held forces do not move in it).
+  m.critical_time_step = criticalTimeStep(m, params, substeps == 1);
+  m.structure_critical_time_step = substeps == 1 ? m.critical_time_step : criticalTimeStep(m, params, true);
+  const double allowed = numerics.critical_step_safety * m.critical_time_step;
+  if (!(numerics.time_step <= allowed)) {
     std::ostringstream msg;
-    msg << source << ": numerics.time_step = " << params.numerics.time_step
-        << " s is unstable; allowed: <= " << allowed << " s (critical_step_safety "
-        << params.numerics.critical_step_safety << " x the critical step " << m.critical_time_step
-        << " s of the stiffest spring)";
+    msg << source << ": numerics.time_step = " << numerics.time_step << " s is unstable; allowed: <= " << allowed
+        << " s (critical_step_safety " << numerics.critical_step_safety << " x the critical step "
+        << m.critical_time_step << " s of the stiffest spring"
+        << (substeps == 1 ? "" : " other than the structure's, which numerics.structure_substeps subdivides") << ")";
+    throw ScenarioError(msg.str());
+  }
+  const double allowed_substep = numerics.critical_step_safety * m.structure_critical_time_step;
+  if (!(numerics.time_step / substeps <= allowed_substep)) {
+    std::ostringstream msg;
+    msg << source << ": numerics.structure_substeps = " << substeps << " leaves a sub-step of "
+        << numerics.time_step / substeps << " s, unstable against the structure stiffness (structure.stiffness = "
+        << params.structure.stiffness << " Pa); allowed: structure_substeps >= "
+        << static_cast<long>(std::ceil(numerics.time_step / allowed_substep)) << " (sub-step <= critical_step_safety "
+        << numerics.critical_step_safety << " x " << m.structure_critical_time_step << " s)";
     throw ScenarioError(msg.str());
   }
   return m;
 }
 
-double criticalTimeStep(const Model& m, const Params& p) {
+double criticalTimeStep(const Model& m, const Params& p, bool with_structure) {
   // Per cell: the sum of the stiffnesses that can act on it at once, against its mass and (through
   // the moment arm of its radius) its yaw inertia.
   std::vector<double> bond_stiffness(m.cell_count, 0.0);
@@ -194,8 +213,8 @@ double criticalTimeStep(const Model& m, const Params& p) {
   for (int k = 0; k < m.cell_count; ++k) {
     // Plane laws: an edge about one cell wide flush with the plane, S_pen = width x depth.
     const double width = std::sqrt(m.area[k]);
-    const double plane = std::max({p.structure.stiffness, p.pusher.stiffness, p.channel.stiffness,
-                                   p.bottom.stiffness}) * width;
+    const double structure = with_structure ? p.structure.stiffness : 0.0;
+    const double plane = std::max({structure, p.pusher.stiffness, p.channel.stiffness, p.bottom.stiffness}) * width;
     // Cell-cell springs (a broken cell touches about six neighbours in place of its bonds) count
     // twice, since the neighbour may move the other way; a rigid plane does not move.
     const double k_sum = 2.0 * std::max(bond_stiffness[k], 6.0 * contact_stiffness) + plane;

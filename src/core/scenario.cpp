@@ -7,6 +7,7 @@
 // ChannelParams, NumericsParams), plus an optional top-level `description:` text.
 //   Enums:    ice.vertical_stress: shear | bending | plate;  sheet.layout: jittered_grid | poisson_disk
 //   Integers: structure.panels, sheet.lloyd_iterations, numerics.max_steps_between_rebuilds,
+//             numerics.structure_substeps,
 //             numerics.threads (signed), sheet.seed (unsigned 64 bit); decimal digits only.
 //   Booleans: bottom.enabled, channel.enabled (true/false; yaml-cpp also takes yes/no, on/off).
 //
@@ -234,6 +235,7 @@ const std::vector<Section>& sections() {
         number(&P::numerics, &NumericsParams::critical_step_safety, "critical_step_safety"),
         integer(&P::numerics, &NumericsParams::max_steps_between_rebuilds,
                 "max_steps_between_rebuilds"),
+        integer(&P::numerics, &NumericsParams::structure_substeps, "structure_substeps"),
         number(&P::numerics, &NumericsParams::rebuild_displacement, "rebuild_displacement"),
         number(&P::numerics, &NumericsParams::rebuild_rotation_deg, "rebuild_rotation_deg"),
         number(&P::numerics, &NumericsParams::friction_regularisation, "friction_regularisation"),
@@ -481,6 +483,8 @@ void checkParams(const Params& p) {
           "a fraction of the critical step (above 1 only to provoke a blow-up in tests)", "(0, 1000]");
   require(n.max_steps_between_rebuilds >= 1, "numerics.max_steps_between_rebuilds",
           n.max_steps_between_rebuilds, "N_iter counts steps", "integer >= 1");
+  require(n.structure_substeps >= 1 && n.structure_substeps <= 1000, "numerics.structure_substeps",
+          n.structure_substeps, "sub-steps of the structure contact per step (1: none)", "integer in [1, 1000]");
   positive("numerics.rebuild_displacement", n.rebuild_displacement, "a fraction of l-bar", "");
   require(n.rebuild_rotation_deg > 0.0 && n.rebuild_rotation_deg <= 45.0,
           "numerics.rebuild_rotation_deg", n.rebuild_rotation_deg,

@@ -89,6 +89,8 @@ void Simulation::reset() {
 double Simulation::time() const { return backend_->time(); }
 double Simulation::timeStep() const { return model_->constants.time_step; }
 double Simulation::criticalTimeStep() const { return model_->critical_time_step; }
+int Simulation::structureSubsteps() const { return model_->constants.structure_substeps; }
+double Simulation::structureCriticalTimeStep() const { return model_->structure_critical_time_step; }
 double Simulation::pushedLength() const { return backend_->pusherPosition() - model_->initial_pusher_x; }
 double Simulation::pusherPosition() const { return backend_->pusherPosition(); }
 long Simulation::stepCount() const { return backend_->stepCount(); }

@@ -94,8 +94,9 @@ SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : nh_(nh), private_nh_(private_nh), settings_(readNodeSettings(private_nh_)) {
   const Scenario scenario = loadScenario(settings_.scenario, settings_.overrides);
   sim_ = std::make_unique<Simulation>(scenario, parseBackendKind(settings_.backend, "~backend"));
-  ROS_INFO("thin_ice_sim: scenario %s (%d cells, dt %.3g s, critical %.3g s), %s", settings_.scenario.c_str(),
-           sim_->cellCount(), sim_->timeStep(), sim_->criticalTimeStep(), sim_->backendNote().c_str());
+  ROS_INFO("thin_ice_sim: scenario %s (%d cells, dt %.3g s, critical %.3g s, structure contact in %d sub-steps), %s",
+           settings_.scenario.c_str(), sim_->cellCount(), sim_->timeStep(), sim_->criticalTimeStep(),
+           sim_->structureSubsteps(), sim_->backendNote().c_str());
   if (settings_.start_paused) sim_->pause();
   applied_velocity_ = sim_->pusherVelocity();
 

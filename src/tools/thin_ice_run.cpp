@@ -359,6 +359,8 @@ std::string summaryJson(const Simulation& sim, const Options& o, const RunResult
     << ", \"backend_note\": " << jsonString(sim.backendNote())
     << ",\n  \"cells\": " << sim.cellCount() << ", \"time_step_s\": " << num(sim.timeStep())
     << ", \"critical_time_step_s\": " << num(sim.criticalTimeStep())
+    << ", \"structure_substeps\": " << sim.structureSubsteps()
+    << ", \"structure_critical_time_step_s\": " << num(sim.structureCriticalTimeStep())
     << ",\n  \"output_interval_s\": " << num(o.output_interval)
     << ",\n  \"target\": {\"" << (o.until_length > 0.0 ? "pushed_length_m" : "time_s") << "\": "
     << num(o.until_length > 0.0 ? o.until_length : o.until_time) << "}"

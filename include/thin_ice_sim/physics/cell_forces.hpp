@@ -3,6 +3,15 @@
 // walls, false bottom, the structure face panel by panel, Eq. 17) and symplectic Euler
 // (Eqs. 14-15). One definition, called per cell by the CPU backend's loop and by the CUDA
 // backend's kernel, on the same plain arrays, so both do the same arithmetic in the same order.
+//
+// Multiple time stepping of the structure contact. K_struct of Eq. (17) is two to three orders
+// stiffer than any spring of the ice, so with one step for all it alone sets dt. With
+// structure_substeps = n > 1 a cell that can reach the face in this step takes n sub-steps of
+// dt/n: the face's force is evaluated anew in each, the other forces (bonds, contacts, water,
+// pusher, walls, bottom) are held at their value at the start of the step, as in the reference
+// system propagator of Tuckerman, Berne and Martyna (J. Chem. Phys. 97, 1990, 1992) with the slow
+// force spread evenly over the step. Every other cell takes one step of dt. The structure load of
+// the step is the mean of its sub-steps, so the impulse it received is kept.
 #pragma once
 
 #include <math.h>
@@ -43,6 +52,7 @@ struct ModelConstants {
   double wall_half_width;          ///< [m] walls at y = +-this
   double wall_x_start;             ///< [m] walls from this x on (side panels only: toe - length)
   double time_step;                ///< dt [s]
+  int structure_substeps;          ///< n [-]: a cell that can reach the structure takes n steps of dt/n
   double mean_edge_length;         ///< l-bar [m] of Algorithm 1
   double rebuild_displacement;     ///< [m] rebuild when a cell moved farther since the last one
   double rebuild_rotation;         ///< [rad] ... or turned more
@@ -70,6 +80,8 @@ struct CellStepInputs {
   const double* inertia;              ///< (cells) [kg m^2]
   const double* area;                 ///< (cells) [m^2]
   const int* vertex_count;            ///< (cells)
+  const double* vertex_x;             ///< (cells x kMaxPolygonVertices) body-frame vertices [m]
+  const double* vertex_y;
   const Vec2* world;                  ///< (cells x kMaxPolygonVertices) world vertices [m]
   const double* box;                  ///< (cells x 4) x0 x1 y0 y1 [m]
   const int* bond_offsets;            ///< (cells + 1)
@@ -111,12 +123,53 @@ TIS_HD PlaneContactForce addPlaneContact(const SlabPenetration& pen, const Rigid
   return f;
 }
 
-/// Forces of the rigid planes on a cell (world polygon `poly` of n vertices, bounding box `box`);
-/// the structure's share is written per panel to `s`. Returns the pusher's x force [N].
+/// Whether the slab of a cell (bounding box `box`, bottom at z_low) comes closer than `margin` [m]
+/// to the structure's solid. The slab reaches the solid when the least value of m . p over it is
+/// below the offset (m_x < 0, m_z > 0: the rightmost x and the lowest z give the least value).
+TIS_HD bool reachesStructure(const ModelConstants& c, const double* box, double z_low, double margin) {
+  const RigidPlane& face = c.structure_face;
+  const double lowest = face.mx * box[1] + face.mz * z_low;
+  return lowest < face.offset + margin && z_low < c.structure_top_z + margin;
+}
+
+/// The panels [first, last] that the y-range [y0, y1] overlaps; false when it overlaps none.
+TIS_HD bool structurePanelRange(const ModelConstants& c, double y0, double y1, int& first, int& last) {
+  const double y_end = c.structure_y_min + c.panels * c.panel_width;
+  first = (int)maxOf(0.0, floor((y0 - c.structure_y_min) / c.panel_width));
+  last = (int)minOf((double)(c.panels - 1), floor((y1 - c.structure_y_min) / c.panel_width));
+  return y1 > c.structure_y_min && y0 < y_end && first <= last;
+}
+
+/// Forces of the structure face's panels first..last (Eq. 17) on a cell (world polygon `poly` of
+/// n vertices, pose `m`), added to (fx, fy, fz, tz); slot p - first of `s` gets panel p's force
+/// on the structure and where it acts (a panel the cell misses gets a zero slot).
+TIS_HD void addStructureForces(const ModelConstants& c, const Vec2* poly, int n, const CellMotion& m, double mass,
+                               double inertia, double area, int first, int last, StructureContact& s, double& fx,
+                               double& fy, double& fz, double& tz) {
+  const double h = c.contact.thickness;
+  const double z_low = m.z - 0.5 * h, z_high = m.z + 0.5 * h;
+  const RigidPlane& face = c.structure_face;
+  s.first_panel = first;
+  s.panel_count = 0;
+  for (int p = first; p <= last && s.panel_count < kMaxPanelsPerCell; ++p) {
+    const double y0 = c.structure_y_min + p * c.panel_width, y1 = y0 + c.panel_width;
+    Vec2 strip_a[kMaxSlabVertices], strip[kMaxSlabVertices];  // n + 1, then n + 2 vertices
+    const int na = clipPolygonByHalfPlane(poly, n, 0.0, -1.0, -y0, strip_a);
+    const int nb = na >= 3 ? clipPolygonByHalfPlane(strip_a, na, 0.0, 1.0, y1, strip) : 0;
+    const SlabPenetration pen = slabPenetration(strip, nb, z_low, minOf(z_high, c.structure_top_z), face);
+    const PlaneContactForce f = addPlaneContact(pen, face, c.structure, m, mass, inertia, area, 0.0, fx, fy, fz, tz);
+    const int slot = s.panel_count++;
+    s.fx[slot] = -f.fx; s.fy[slot] = -f.fy; s.fz[slot] = -f.fz;
+    s.px[slot] = pen.centroid.x; s.py[slot] = pen.centroid.y; s.pz[slot] = pen.z;
+  }
+}
+
+/// Forces of the pusher, the basin walls and the false bottom on a cell (world polygon `poly` of
+/// n vertices, bounding box `box`), added to (fx, fy, fz, tz). Returns the pusher's x force [N].
 TIS_HD double addRigidPlaneForces(const ModelConstants& c, const Vec2* poly, int n, const double* box,
                                   const CellMotion& m, double mass, double inertia, double area,
-                                  double pusher_x, double pusher_velocity, StructureContact& s, double& fx,
-                                  double& fy, double& fz, double& tz) {
+                                  double pusher_x, double pusher_velocity, double& fx, double& fy, double& fz,
+                                  double& tz) {
   const double h = c.contact.thickness;
   const double z_low = m.z - 0.5 * h, z_high = m.z + 0.5 * h;
   double pusher_fx = 0.0;
@@ -152,33 +205,78 @@ TIS_HD double addRigidPlaneForces(const ModelConstants& c, const Vec2* poly, int
     addPlaneContact(slabPenetration(part, count, z_low, z_high, floor), floor, c.bottom, m, mass, inertia, area, 0.0,
                     fx, fy, fz, tz);
   }
-  // Structure face, panel by panel: the face spans z up to its top and y over the panels.
-  s.first_panel = 0;
+  return pusher_fx;
+}
+
+/// World vertices and bounding box (x0 x1 y0 y1) of a cell at pose `m`; returns (cos, sin) yaw.
+TIS_HD Vec2 placeCell(const CellMotion& m, const double* vertex_x, const double* vertex_y, int count, Vec2* world,
+                      double* box) {
+  const double cs = cos(m.yaw), sn = sin(m.yaw);
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (int v = 0; v < count; ++v) {
+    const Vec2 w = Vec2{m.x, m.y} + rotate(Vec2{vertex_x[v], vertex_y[v]}, cs, sn);
+    world[v] = w;
+    x0 = minOf(x0, w.x); x1 = maxOf(x1, w.x);
+    y0 = minOf(y0, w.y); y1 = maxOf(y1, w.y);
+  }
+  box[0] = x0; box[1] = x1; box[2] = y0; box[3] = y1;
+  return {cs, sn};
+}
+
+/// n sub-steps of dt/n of one cell that can reach the structure (see the file comment): the
+/// face's force anew in each, the slow forces (fx, fy, fz, tz) held. `s` gets the mean load of
+/// each panel slot over the sub-steps and its force-weighted mean point (the cell moves
+/// micrometres in one step, so the moment of the mean is the mean moment to that accuracy).
+TIS_HD void subcycleStructureContact(int k, const ModelConstants& c, const CellStepInputs& in, double margin,
+                                     double fx, double fy, double fz, double tz, CellMotion& motion,
+                                     StructureContact& s) {
+  const int n = in.vertex_count[k];
+  const double mass = in.mass[k], inertia = in.inertia[k], area = in.area[k];
+  const int substeps = c.structure_substeps;
+  const double sub_dt = c.time_step / substeps, share = 1.0 / substeps;
+  const double* box0 = in.box + 4 * k;
+  int first = 0, last = -1;
+  if (!structurePanelRange(c, box0[2] - margin, box0[3] + margin, first, last)) last = first - 1;
+  s.first_panel = first;
   s.panel_count = 0;
-  const RigidPlane& face = c.structure_face;
-  // The slab reaches the solid when the least value of m . p over it is below the offset
-  // (m_x < 0, m_z > 0: the rightmost x and the lowest z give the least value).
-  const double lowest = face.mx * box[1] + face.mz * z_low;
-  if (lowest < face.offset && z_low < c.structure_top_z) {
-    const double y_end = c.structure_y_min + c.panels * c.panel_width;
-    const int first = (int)maxOf(0.0, floor((box[2] - c.structure_y_min) / c.panel_width));
-    const int last = (int)minOf((double)(c.panels - 1), floor((box[3] - c.structure_y_min) / c.panel_width));
-    if (box[3] > c.structure_y_min && box[2] < y_end && first <= last) {
-      s.first_panel = first;
-      for (int p = first; p <= last && s.panel_count < kMaxPanelsPerCell; ++p) {
-        const double y0 = c.structure_y_min + p * c.panel_width, y1 = y0 + c.panel_width;
-        Vec2 strip_a[kMaxSlabVertices], strip[kMaxSlabVertices];  // n + 1, then n + 2 vertices
-        const int na = clipPolygonByHalfPlane(poly, n, 0.0, -1.0, -y0, strip_a);
-        const int nb = na >= 3 ? clipPolygonByHalfPlane(strip_a, na, 0.0, 1.0, y1, strip) : 0;
-        const SlabPenetration pen = slabPenetration(strip, nb, z_low, minOf(z_high, c.structure_top_z), face);
-        const PlaneContactForce f = addPlaneContact(pen, face, c.structure, m, mass, inertia, area, 0.0, fx, fy, fz, tz);
-        const int slot = s.panel_count++;
-        s.fx[slot] = -f.fx; s.fy[slot] = -f.fy; s.fz[slot] = -f.fz;
-        s.px[slot] = pen.centroid.x; s.py[slot] = pen.centroid.y; s.pz[slot] = pen.z;
-      }
+  double weight[kMaxPanelsPerCell];
+  for (int slot = 0; slot < kMaxPanelsPerCell; ++slot) {
+    s.fx[slot] = s.fy[slot] = s.fz[slot] = 0.0;
+    s.px[slot] = s.py[slot] = s.pz[slot] = 0.0;
+    weight[slot] = 0.0;
+  }
+  Vec2 poly[kMaxPolygonVertices];
+  double box[4];
+  StructureContact now;
+  for (int step = 0; step < substeps; ++step) {
+    const Vec2* placed = in.world + (size_t)k * kMaxPolygonVertices;  // the pose at the step's start
+    if (step > 0) {
+      placeCell(motion, in.vertex_x + (size_t)k * kMaxPolygonVertices, in.vertex_y + (size_t)k * kMaxPolygonVertices,
+                n, poly, box);
+      placed = poly;
+    }
+    double sx = fx, sy = fy, sz = fz, stz = tz;
+    addStructureForces(c, placed, n, motion, mass, inertia, area, first, last, now, sx, sy, sz, stz);
+    integrateSymplecticEuler(motion, sx, sy, sz, stz, 1.0 / mass, 1.0 / inertia, sub_dt);
+    s.panel_count = now.panel_count;
+    for (int slot = 0; slot < now.panel_count; ++slot) {
+      s.fx[slot] += share * now.fx[slot];
+      s.fy[slot] += share * now.fy[slot];
+      s.fz[slot] += share * now.fz[slot];
+      const double w = sqrt(now.fx[slot] * now.fx[slot] + now.fy[slot] * now.fy[slot] + now.fz[slot] * now.fz[slot]);
+      weight[slot] += w;
+      s.px[slot] += w * now.px[slot];
+      s.py[slot] += w * now.py[slot];
+      s.pz[slot] += w * now.pz[slot];
     }
   }
-  return pusher_fx;
+  for (int slot = 0; slot < s.panel_count; ++slot) {
+    if (weight[slot] > 0.0) {
+      s.px[slot] /= weight[slot]; s.py[slot] /= weight[slot]; s.pz[slot] /= weight[slot];
+    } else {
+      s.px[slot] = now.px[slot]; s.py[slot] = now.py[slot]; s.pz[slot] = now.pz[slot];
+    }
+  }
 }
 
 /// One step of cell k: gather, water, planes, symplectic Euler. `motion` is updated in place;
@@ -201,10 +299,32 @@ TIS_HD CellStepResult stepCell(int k, const ModelConstants& c, const CellStepInp
   const double mass = in.mass[k], inertia = in.inertia[k], area = in.area[k];
   const WaterForce w = waterForce(c.water, mass, area, inertia / (mass / area), m.z, {m.vx, m.vy}, m.vz, m.wz);
   fx += w.horizontal.x; fy += w.horizontal.y; fz += w.vertical; tz += w.torque;
+  const Vec2* poly = in.world + (size_t)k * kMaxPolygonVertices;
+  const int n = in.vertex_count[k];
+  const double* box = in.box + 4 * k;
   CellStepResult r;
-  r.pusher_fx = addRigidPlaneForces(c, in.world + (size_t)k * kMaxPolygonVertices, in.vertex_count[k], in.box + 4 * k,
-                                    m, mass, inertia, area, pusher_x, pusher_velocity, structure, fx, fy, fz, tz);
-  integrateSymplecticEuler(motion, fx, fy, fz, tz, 1.0 / mass, 1.0 / inertia, c.time_step);
+  r.pusher_fx = addRigidPlaneForces(c, poly, n, box, m, mass, inertia, area, pusher_x, pusher_velocity, fx, fy, fz, tz);
+  const double z_low = m.z - 0.5 * c.contact.thickness;
+  // A bound on how far any point of the cell can travel in this step [m], with the velocity it
+  // will have after the forces so far (1-norms bound the 2-norms and need no root; the box's
+  // width plus height bounds the vertices' distance from the centroid): a cell that can reach
+  // the face before the step ends takes the sub-steps.
+  const double dt = c.time_step;
+  const double size = (box[1] - box[0]) + (box[3] - box[2]);
+  const double speed = fabs(m.vx) + fabs(m.vy) + fabs(m.vz) + (fabs(fx) + fabs(fy) + fabs(fz)) / mass * dt;
+  const double turn_rate = fabs(m.wz) + fabs(tz) / inertia * dt;
+  const double travel = (speed + turn_rate * size) * dt;
+  if (c.structure_substeps > 1 && reachesStructure(c, box, z_low, travel)) {
+    subcycleStructureContact(k, c, in, travel, fx, fy, fz, tz, motion, structure);
+  } else {
+    structure.first_panel = 0;
+    structure.panel_count = 0;
+    int first, last;
+    if (reachesStructure(c, box, z_low, 0.0) && structurePanelRange(c, box[2], box[3], first, last)) {
+      addStructureForces(c, poly, n, m, mass, inertia, area, first, last, structure, fx, fy, fz, tz);
+    }
+    integrateSymplecticEuler(motion, fx, fy, fz, tz, 1.0 / mass, 1.0 / inertia, dt);
+  }
   const CellMotion& a = motion;
   const double speed2 = a.vx * a.vx + a.vy * a.vy + a.vz * a.vz;
   r.blown = !isfinite(a.x + a.y + a.z + a.yaw) || !(speed2 < runaway_speed * runaway_speed);
@@ -236,21 +356,6 @@ TIS_HD SlotLoad structureSlotLoad(const ModelConstants& c, const StructureContac
   l.panel_ty = rz * l.fx - rx * l.fz;
   l.panel_tz = rx * l.fy - ry_panel * l.fx;
   return l;
-}
-
-/// World vertices and bounding box (x0 x1 y0 y1) of a cell at pose `m`; returns (cos, sin) yaw.
-TIS_HD Vec2 placeCell(const CellMotion& m, const double* vertex_x, const double* vertex_y, int count, Vec2* world,
-                      double* box) {
-  const double cs = cos(m.yaw), sn = sin(m.yaw);
-  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-  for (int v = 0; v < count; ++v) {
-    const Vec2 w = Vec2{m.x, m.y} + rotate(Vec2{vertex_x[v], vertex_y[v]}, cs, sn);
-    world[v] = w;
-    x0 = minOf(x0, w.x); x1 = maxOf(x1, w.x);
-    y0 = minOf(y0, w.y); y1 = maxOf(y1, w.y);
-  }
-  box[0] = x0; box[1] = x1; box[2] = y0; box[3] = y1;
-  return {cs, sn};
 }
 
 }  // namespace thin_ice

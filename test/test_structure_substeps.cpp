@@ -1,0 +1,175 @@
+// Multiple time stepping of the structure contact (physics/cell_forces.hpp): one square cell,
+// stepped by stepCell as the backends step it, against answers worked out by hand.
+//
+// The cell: a 0.2 m square of ice, h = 0.05 m, rho_i = 920 kg/m^3 (m = 1.84 kg), floating at its
+// draft with no water drag, so that nothing but the structure and the given pair loads act on it.
+// The face is vertical (m = (-1, 0, 0)), so an edge flush with it penetrating by d has
+// V = 0.2 d h and Eq. (17) is a linear spring k = K_struct 0.2 m = 3.4e10 N/m:
+// omega = sqrt(k/m) = 1.359e5 rad/s, a contact lasting pi/omega = 23 us, less than one outer step.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "thin_ice_sim/physics/cell_forces.hpp"
+
+namespace thin_ice {
+namespace {
+
+constexpr double kSide = 0.2;          // [m]
+constexpr double kH = 0.05;            // [m]
+constexpr double kRhoIce = 920.0;      // [kg/m^3]
+constexpr double kRhoWater = 1000.0;   // [kg/m^3]
+constexpr double kStiffness = 1.7e11;  // K_struct [Pa]
+constexpr double kMass = kRhoIce * kSide * kSide * kH;                       // 1.84 kg
+constexpr double kInertia = kRhoIce * kH * kSide * kSide * kSide * kSide / 6.0;  // rho h a^4/6 [kg m^2]
+constexpr double kOuterStep = 2.4e-5;  // [s]
+constexpr double kBeta = 0.5;          // friction_viscous_limit [-]
+
+/// Constants of a cell alone in still water with a vertical face at x = face_x; no bottom, no
+/// walls, the pusher far behind.
+ModelConstants loneCell(double face_x, double damping_ratio, double dt, int substeps) {
+  ModelConstants c{};
+  c.contact.thickness = kH;
+  c.water = {kRhoWater, 9.81, kH, 0.0, 0.0, 0.0, 0.0};
+  c.structure = {kStiffness, kH, 0.1, damping_ratio, 1e-3, kBeta / (dt / substeps)};
+  c.pusher = {1e9, kH, 0.0, damping_ratio, 1e-3, kBeta / dt};
+  c.structure_face = {-1.0, 0.0, 0.0, -face_x};
+  c.structure_top_z = 1.0;
+  c.structure_toe_x = face_x;
+  c.structure_y_min = -1.0;
+  c.panel_width = 2.0;
+  c.panels = 1;
+  c.calibration_factor = 1.0;
+  c.bottom_enabled = false;
+  c.walls_enabled = false;
+  c.time_step = dt;
+  c.structure_substeps = substeps;
+  c.rebuild_displacement = 1e3;
+  c.rebuild_rotation = 1e3;
+  return c;
+}
+
+/// One cell and (optionally) one held pair load on it, stepped as a backend steps it.
+struct LoneCell {
+  double vertex_x[kMaxPolygonVertices] = {-0.5 * kSide, 0.5 * kSide, 0.5 * kSide, -0.5 * kSide};
+  double vertex_y[kMaxPolygonVertices] = {-0.5 * kSide, -0.5 * kSide, 0.5 * kSide, 0.5 * kSide};
+  double mass = kMass, inertia = kInertia, area = kSide * kSide;
+  int vertex_count = 4;
+  Vec2 world[kMaxPolygonVertices];
+  double box[4];
+  int bond_offsets[2] = {0, 0};
+  int bond_entries[1] = {1};  // bond 0, the cell is its j
+  unsigned char bond_state[1] = {kBondIntact};
+  PairLoad bond_load[1] = {};
+  int contact_offsets[2] = {0, 0};
+  CellMotion motion{};
+  CellMotion reference{};
+  double structure_impulse_x = 0.0;  ///< [N s] on the structure, summed over the steps
+  double last_structure_fx = 0.0;    ///< [N] mean over the last step
+
+  LoneCell(double x, double vx) {
+    motion.x = x;
+    motion.z = 0.5 * kH - kRhoIce / kRhoWater * kH;  // floating at the draft
+    motion.vx = vx;
+    reference = motion;
+  }
+
+  /// Holds the horizontal force `fx` [N] on the cell, as a bond's load would be held.
+  void holdForce(double fx) {
+    bond_offsets[1] = 1;
+    bond_load[0].force_on_j = {fx, 0.0};
+  }
+
+  void step(const ModelConstants& c) {
+    placeCell(motion, vertex_x, vertex_y, vertex_count, world, box);
+    const CellStepInputs in = {&mass,         &inertia,     &area,       &vertex_count, vertex_x,
+                               vertex_y,      world,        box,         bond_offsets,  bond_entries,
+                               bond_state,    bond_load,    contact_offsets, nullptr,   nullptr,
+                               nullptr};
+    StructureContact s;
+    const CellStepResult r = stepCell(0, c, in, -100.0, 0.0, kRunawaySpeed, reference, motion, s);
+    ASSERT_FALSE(r.blown);
+    last_structure_fx = 0.0;
+    for (int slot = 0; slot < s.panel_count; ++slot) last_structure_fx += s.fx[slot];
+    structure_impulse_x += last_structure_fx * c.time_step;
+  }
+};
+
+TEST(StructureSubsteps, ElasticImpactOnAVerticalFaceReboundsAtTheSpeedItCameIn) {
+  // Undamped, the cell leaves at -v0 and gives the face the impulse 2 m v0. Symplectic Euler's
+  // energy error over one oscillation is within a factor (1 +- omega dt/2) of its energy, so the
+  // exit speed is within omega dt/2 = 1.7 % for 96 sub-steps of 0.25 us (omega dt = 0.034).
+  const double v0 = 0.1, face_x = 0.5 * kSide + 1e-6;
+  const int substeps = 96;
+  const double omega = std::sqrt(kStiffness * kSide / kMass);
+  const double bound = 0.5 * omega * kOuterStep / substeps;
+  const ModelConstants c = loneCell(face_x, 0.0, kOuterStep, substeps);
+  LoneCell cell(0.0, v0);
+  for (int s = 0; s < 20; ++s) cell.step(c);  // 480 us: in, bounce, out
+  EXPECT_NEAR(cell.motion.vx, -v0, bound * v0);
+  EXPECT_NEAR(cell.structure_impulse_x, 2.0 * kMass * v0, bound * 2.0 * kMass * v0);
+  EXPECT_LT(cell.motion.x, 0.0);  // on its way back
+
+  // The same outer step without sub-steps cannot resolve the contact (omega dt = 3.3 > 2): one
+  // step's penetration v0 dt throws the cell back at about ten times the speed it came in.
+  const ModelConstants single = loneCell(face_x, 0.0, kOuterStep, 1);
+  LoneCell coarse(0.0, v0);
+  for (int s = 0; s < 20; ++s) coarse.step(single);
+  EXPECT_LT(coarse.motion.vx, -3.0 * v0);
+}
+
+TEST(StructureSubsteps, WithNoOtherForceTheSubstepsAreTheFineSingleRateStep) {
+  // Nothing is held (no pair load, no drag, buoyancy balancing weight), so n sub-steps of dt/n
+  // must be n single-rate steps of dt/n, up to the rounding of the placement.
+  const double v0 = 0.1, face_x = 0.5 * kSide + 1e-6;
+  const int substeps = 48;
+  LoneCell multi(0.0, v0), fine(0.0, v0);
+  const ModelConstants c_multi = loneCell(face_x, 0.2, kOuterStep, substeps);
+  const ModelConstants c_fine = loneCell(face_x, 0.2, kOuterStep / substeps, 1);
+  for (int s = 0; s < 20; ++s) multi.step(c_multi);
+  for (int s = 0; s < 20 * substeps; ++s) fine.step(c_fine);
+  EXPECT_NEAR(multi.motion.vx, fine.motion.vx, 1e-9 * v0);
+  EXPECT_NEAR(multi.motion.x, fine.motion.x, 1e-12);
+  EXPECT_NEAR(multi.structure_impulse_x, fine.structure_impulse_x, 1e-9 * kMass * v0);
+  // Damped (zeta = 0.2), it comes back slower than it went in.
+  EXPECT_LT(multi.motion.vx, 0.0);
+  EXPECT_GT(multi.motion.vx, -v0);
+}
+
+TEST(StructureSubsteps, AHeldPushIsCarriedByTheFaceAtItsFullValue) {
+  // A held force of 1000 N presses the cell against the face (damped, zeta = 0.2). At rest the
+  // face carries exactly 1000 N at a penetration d = F/k = 2.9e-8 m: had the held force been
+  // applied per sub-step instead of spread over the step, the face would carry n times it.
+  const double push = 1000.0, face_x = 0.5 * kSide;
+  for (int substeps : {1, 8}) {
+    const double dt = substeps == 1 ? kOuterStep / 8 : kOuterStep;
+    const ModelConstants c = loneCell(face_x, 0.2, dt, substeps);
+    LoneCell cell(0.0, 0.0);
+    cell.holdForce(push);
+    for (int s = 0; s < 2000; ++s) cell.step(c);
+    EXPECT_NEAR(cell.last_structure_fx, push, 1e-6 * push) << substeps << " sub-steps";
+    EXPECT_NEAR(cell.motion.x + 0.5 * kSide - face_x, push / (kStiffness * kSide), 1e-3 * push / (kStiffness * kSide))
+        << substeps << " sub-steps";
+    EXPECT_NEAR(cell.motion.vx, 0.0, 1e-9) << substeps << " sub-steps";
+  }
+}
+
+TEST(StructureSubsteps, FarFromTheFaceTheSubstepCountChangesNothing) {
+  // A cell 5 m from the face takes one step of dt whatever n is: bit-identical motion.
+  ModelConstants c1 = loneCell(5.0, 0.2, kOuterStep, 1), c8 = loneCell(5.0, 0.2, kOuterStep, 8);
+  c1.water.linear_drag = c8.water.linear_drag = 20.0;  // a force that changes with the state
+  LoneCell one(0.0, 0.3), eight(0.0, 0.3);
+  one.holdForce(5.0);
+  eight.holdForce(5.0);
+  for (int s = 0; s < 500; ++s) {
+    one.step(c1);
+    eight.step(c8);
+  }
+  EXPECT_EQ(one.motion.x, eight.motion.x);
+  EXPECT_EQ(one.motion.vx, eight.motion.vx);
+  EXPECT_EQ(eight.structure_impulse_x, 0.0);
+}
+
+}  // namespace
+}  // namespace thin_ice
