@@ -6,13 +6,16 @@ clamping, dropping, timeout), pause/step/reset, and finally the loads once the i
 structure.
 """
 import math
+import os
 import threading
 import time
 import unittest
 
+import rospkg
 import rospy
 import rostest
 import tf2_ros
+import yaml
 from geometry_msgs.msg import Twist, WrenchStamped
 from rosgraph_msgs.msg import Clock
 from std_srvs.srv import Empty
@@ -22,7 +25,9 @@ from thin_ice_sim.msg import PanelLoads, SimStatus
 from thin_ice_sim.srv import Step
 
 LOAD_PERIOD = 0.01  # [s] of simulated time: 1 / ~load_rate
-TIME_STEP = 5e-6    # [s] quick.yaml's dt
+# [s] quick.yaml's dt, read from the file so that a new step there does not break these tests
+with open(os.path.join(rospkg.RosPack().get_path("thin_ice_sim"), "config", "scenarios", "quick.yaml")) as f:
+    TIME_STEP = float(yaml.safe_load(f)["numerics"]["time_step"])
 
 
 class NodeInterfaceTest(unittest.TestCase):
