@@ -8,6 +8,8 @@
 
 #include "thin_ice_sim/backend.hpp"
 #include "thin_ice_sim/built_backends.hpp"
+#include "thin_ice_sim/ice_sheet.hpp"
+#include "thin_ice_sim/model.hpp"
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/simulation.hpp"
 
@@ -141,9 +143,32 @@ TEST(Simulation, TooFewStructureSubstepsAreRefusedWithTheLeastThatIsStable) {
   } catch (const ScenarioError& e) {
     const std::string what = e.what();
     EXPECT_NE(what.find("numerics.structure_substeps = 4"), std::string::npos) << what;
-    EXPECT_NE(what.find("allowed: structure_substeps >= 5"), std::string::npos) << what;
+    EXPECT_NE(what.find("allowed: numerics.structure_substeps >= 5"), std::string::npos) << what;
   }
   EXPECT_NO_THROW(Simulation(loadScenario(kQuick, {"numerics.structure_substeps=5"}), BackendKind::kCpu));
+  // With one rate the same dt is refused, and the message says that sub-steps would take it.
+  try {
+    Simulation sim(loadScenario(kQuick, {"numerics.structure_substeps=1"}), BackendKind::kCpu);
+    FAIL() << "dt = 2.5e-5 s without sub-steps was accepted";
+  } catch (const ScenarioError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("numerics.time_step = 2.5e-05 s is unstable"), std::string::npos) << what;
+    EXPECT_NE(what.find("or keep it and set numerics.structure_substeps >= 5"), std::string::npos) << what;
+  }
+}
+
+TEST(Simulation, TheStructuresFrictionLimitIsScaledToTheSubstep) {
+  // friction_viscous_limit beta bounds viscous friction by beta m_eff / (its step): the structure's
+  // friction is stepped at dt/n, the pusher's and the walls' at dt.
+  const Scenario s = loadScenario(kQuick);
+  const IceSheet sheet = generateIceSheet(s.params.sheet);
+  const Model m = buildModel(s.params, sheet, "quick");
+  const double beta = s.params.numerics.friction_viscous_limit, dt = s.params.numerics.time_step;
+  const int n = s.params.numerics.structure_substeps;
+  ASSERT_GT(n, 1);
+  EXPECT_DOUBLE_EQ(m.constants.structure.friction_rate_limit, beta / (dt / n));
+  EXPECT_DOUBLE_EQ(m.constants.wall.friction_rate_limit, beta / dt);
+  EXPECT_DOUBLE_EQ(m.constants.pusher.friction_rate_limit, beta / dt);
 }
 
 TEST(Simulation, CudaBackendRequestFailsClearlyAndAutoFallsBackWithoutAGpu) {

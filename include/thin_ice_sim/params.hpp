@@ -79,13 +79,18 @@ struct ChannelParams {
   double friction = 0.1;            ///< [-]
 };
 
+/// Largest numerics.structure_substeps the loader accepts.
+constexpr int kMaxStructureSubsteps = 1000;
+
 struct NumericsParams {
   double time_step = 5e-6;          ///< dt [s]; refused above the critical step
   double critical_step_safety = 0.8;///< dt must be <= this x the critical step of the stiffest spring
+                                    ///< (the structure's against dt / structure_substeps)
                                     ///< (in (0, 1]; up to 1000 only to provoke a blow-up in tests)
   int max_steps_between_rebuilds = 1000;  ///< N_iter of Algorithm 1
   int structure_substeps = 1;       ///< n [-]: a cell that can reach the structure takes n steps of
-                                    ///< dt/n against it, the other forces held (physics/cell_forces.hpp)
+                                    ///< dt/n against it, the other forces held (physics/cell_forces.hpp);
+                                    ///< 1 .. kMaxStructureSubsteps
   double rebuild_displacement = 0.1;      ///< rebuild when a cell moved this x l-bar [-]
   double rebuild_rotation_deg = 2.0;      ///< ... or turned this much [deg] (delta_rot)
   double friction_regularisation = 1e-3;  ///< [m/s] slip speed below which friction is viscous

@@ -175,23 +175,39 @@ Model buildModel(const Params& params, const IceSheet& sheet, const std::string&
   // is checked against every spring at once (conservative: the held forces do not move in it).
   m.critical_time_step = criticalTimeStep(m, params, substeps == 1);
   m.structure_critical_time_step = substeps == 1 ? m.critical_time_step : criticalTimeStep(m, params, true);
-  const double allowed = numerics.critical_step_safety * m.critical_time_step;
+  const double safety = numerics.critical_step_safety;
+  const double allowed = safety * m.critical_time_step;
+  const double allowed_substep = safety * m.structure_critical_time_step;
+  // The least n that makes dt/n stable against the structure, and whether the loader accepts it.
+  const long least_substeps = static_cast<long>(std::ceil(numerics.time_step / allowed_substep));
+  const bool substeps_can_help = least_substeps <= kMaxStructureSubsteps;
   if (!(numerics.time_step <= allowed)) {
     std::ostringstream msg;
     msg << source << ": numerics.time_step = " << numerics.time_step << " s is unstable; allowed: <= " << allowed
-        << " s (critical_step_safety " << numerics.critical_step_safety << " x the critical step "
-        << m.critical_time_step << " s of the stiffest spring"
+        << " s (critical_step_safety " << safety << " x the critical step " << m.critical_time_step
+        << " s of the stiffest spring"
         << (substeps == 1 ? "" : " other than the structure's, which numerics.structure_substeps subdivides") << ")";
+    // With one rate, say when sub-steps of the structure alone would make this dt stable.
+    if (substeps == 1 && substeps_can_help) {
+      const double ice_only = safety * criticalTimeStep(m, params, false);
+      if (numerics.time_step <= ice_only) {
+        msg << "; or keep it and set numerics.structure_substeps >= " << least_substeps
+            << " (the structure's spring is what limits it)";
+      }
+    }
     throw ScenarioError(msg.str());
   }
-  const double allowed_substep = numerics.critical_step_safety * m.structure_critical_time_step;
   if (!(numerics.time_step / substeps <= allowed_substep)) {
     std::ostringstream msg;
     msg << source << ": numerics.structure_substeps = " << substeps << " leaves a sub-step of "
         << numerics.time_step / substeps << " s, unstable against the structure stiffness (structure.stiffness = "
-        << params.structure.stiffness << " Pa); allowed: structure_substeps >= "
-        << static_cast<long>(std::ceil(numerics.time_step / allowed_substep)) << " (sub-step <= critical_step_safety "
-        << numerics.critical_step_safety << " x " << m.structure_critical_time_step << " s)";
+        << params.structure.stiffness << " Pa); allowed: ";
+    if (substeps_can_help) {
+      msg << "numerics.structure_substeps >= " << least_substeps;
+    } else {
+      msg << "a smaller numerics.time_step (it would need more than " << kMaxStructureSubsteps << " sub-steps)";
+    }
+    msg << " (sub-step <= critical_step_safety " << safety << " x " << m.structure_critical_time_step << " s)";
     throw ScenarioError(msg.str());
   }
   return m;

@@ -483,8 +483,9 @@ void checkParams(const Params& p) {
           "a fraction of the critical step (above 1 only to provoke a blow-up in tests)", "(0, 1000]");
   require(n.max_steps_between_rebuilds >= 1, "numerics.max_steps_between_rebuilds",
           n.max_steps_between_rebuilds, "N_iter counts steps", "integer >= 1");
-  require(n.structure_substeps >= 1 && n.structure_substeps <= 1000, "numerics.structure_substeps",
-          n.structure_substeps, "sub-steps of the structure contact per step (1: none)", "integer in [1, 1000]");
+  require(n.structure_substeps >= 1 && n.structure_substeps <= kMaxStructureSubsteps, "numerics.structure_substeps",
+          n.structure_substeps, "sub-steps of the structure contact per step (1: none)",
+          "integer in [1, " + std::to_string(kMaxStructureSubsteps) + "]");
   positive("numerics.rebuild_displacement", n.rebuild_displacement, "a fraction of l-bar", "");
   require(n.rebuild_rotation_deg > 0.0 && n.rebuild_rotation_deg <= 45.0,
           "numerics.rebuild_rotation_deg", n.rebuild_rotation_deg,
