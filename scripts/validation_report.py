@@ -107,6 +107,10 @@ def main():
     lines += ["## Spread from the Voronoi mesh alone (seeds)", ""]
     lines += (["| series | runs | F_avg mean +- std [N] | F_p mean +- std [N] |", "|---|---:|---:|---:|"] + spread
               if spread else ["Not run yet (`scripts/validate --series ID --seeds 2,3`)."])
+    unsteady = [n for n in runs if re.fullmatch(r"[WMS]-\d(-seed\d+)?", n) and not runs[n]["load"].get("steady_found")]
+    if spread and unsteady:
+        lines += ["", "Where a run has no steady state (" + ", ".join(sorted(unsteady)) + "), its F_avg above is the "
+                  "tail mean of its last quarter, not a steady-state load."]
     lines.append("")
     res = []
     for sid in SERIES:
