@@ -321,15 +321,18 @@ TIS_HD CellStepResult stepCell(int k, const ModelConstants& c, const CellStepInp
   CellStepResult r;
   r.pusher_fx = addRigidPlaneForces(c, poly, n, box, m, mass, inertia, area, pusher_x, pusher_velocity, fx, fy, fz, tz);
   const double z_low = m.z - 0.5 * c.contact.thickness;
-  // A bound on how far any point of the cell can travel in this step [m], with the velocity it
-  // will have after the forces so far (1-norms bound the 2-norms and need no root; the box's
-  // width plus height bounds the vertices' distance from the centroid): a cell that can reach
-  // the face before the step ends takes the sub-steps.
   const double dt = c.time_step;
-  const double size = (box[1] - box[0]) + (box[3] - box[2]);
-  const double speed = fabs(m.vx) + fabs(m.vy) + fabs(m.vz) + (fabs(fx) + fabs(fy) + fabs(fz)) / mass * dt;
-  const double turn_rate = fabs(m.wz) + fabs(tz) / inertia * dt;
-  const double travel = (speed + turn_rate * size) * dt;
+  // With sub-steps: a bound on how far any point of the cell can travel in this step [m], with
+  // the velocity it will have after the forces so far (1-norms bound the 2-norms and need no
+  // root; the box's width plus height bounds the vertices' distance from the centroid). A cell
+  // that can reach the face before the step ends takes the sub-steps. Not computed with n = 1.
+  double travel = 0.0;
+  if (c.structure_substeps > 1) {
+    const double size = (box[1] - box[0]) + (box[3] - box[2]);
+    const double speed = fabs(m.vx) + fabs(m.vy) + fabs(m.vz) + (fabs(fx) + fabs(fy) + fabs(fz)) / mass * dt;
+    const double turn_rate = fabs(m.wz) + fabs(tz) / inertia * dt;
+    travel = (speed + turn_rate * size) * dt;
+  }
   if (c.structure_substeps > 1 && reachesStructure(c, box, z_low, travel)) {
     subcycleStructureContact(k, c, in, travel, fx, fy, fz, tz, motion, structure);
   } else {
