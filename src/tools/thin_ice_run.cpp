@@ -7,8 +7,13 @@
 // the sheet at rest) listed in snapshots/index.csv; with --profiles DIR/profiles.csv (the rubble
 // pile's side and top profiles at the end).
 // Exit status: 0 done; 1 I/O or backend failure; 2 bad arguments or scenario (nothing written);
-// 3 the simulation became unhealthy (rows up to then and the summary are kept).
+// 3 the simulation became unhealthy (rows up to then and the summary are kept); 4 stopped by
+// SIGINT or SIGTERM before the target: the output interval in progress is finished, and its rows,
+// the summary (status "interrupted"), the profiles and a last snapshot are written as at the
+// target (a second signal kills at once).
 #include <unistd.h>
+
+#include <csignal>
 
 #include <algorithm>
 #include <cctype>
@@ -250,7 +255,17 @@ struct RunResult {
   double wall = 0.0;                 // [s] of stepping and output
   LoadSample last;                   // the last row written (zero loads before the first)
   std::string error;                 // empty when the run reached its target
+  int interrupted_by = 0;            // the signal that stopped the run early, 0 if none
 };
+
+/// The signal that asked the run to stop (0: none). The handler only records it; the stepping
+/// loop looks at it after each output interval.
+volatile std::sig_atomic_t g_stop_signal = 0;
+
+extern "C" void requestStop(int signal_number) {
+  g_stop_signal = signal_number;
+  std::signal(signal_number, SIG_DFL);  // a second signal ends the process at once
+}
 
 RunResult runSimulation(Simulation& sim, const Options& o) {
   RunResult r;
@@ -309,10 +324,16 @@ RunResult runSimulation(Simulation& sim, const Options& o) {
     csv << loadsRow(r.last, panels) << std::flush;
     r.length.push_back(r.last.pushed_length);
     r.load.push_back(r.last.horizontal_calibrated);
-    left = stepsLeft();
+    r.interrupted_by = g_stop_signal;
+    const bool last_row = stepsLeft() <= 0 || r.interrupted_by != 0;
+    left = r.interrupted_by != 0 ? 0 : stepsLeft();
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
-    progress.report(fraction(), r.last, wall, left <= 0);
-    if (snapshotDue(fraction(), left <= 0)) writeSnapshot(sim, snapshot_dir, row);
+    progress.report(fraction(), r.last, wall, last_row);
+    if (snapshotDue(fraction(), last_row)) writeSnapshot(sim, snapshot_dir, row);
+  }
+  if (r.interrupted_by != 0) {
+    std::fprintf(stderr, "thin_ice_run: stopped by signal %d at t = %.6g s, L = %.6g m; writing what was reached\n",
+                 r.interrupted_by, sim.time(), sim.pushedLength());
   }
   r.wall = std::chrono::duration<double>(Clock::now() - start).count();
   csv.close();
@@ -348,7 +369,8 @@ std::string summaryJson(const Simulation& sim, const Options& o, const RunResult
   const double cell_steps = double(sim.cellCount()) * double(sim.stepCount());
   std::ostringstream j;
   auto num = [](double v) { return jsonNumber(v); };
-  j << "{\n  \"status\": " << jsonString(r.error.empty() ? "completed" : "unhealthy")
+  const char* status = !r.error.empty() ? "unhealthy" : r.interrupted_by != 0 ? "interrupted" : "completed";
+  j << "{\n  \"status\": " << jsonString(status)
     << ",\n  \"error\": " << (r.error.empty() ? "null" : jsonString(r.error))
     << ",\n  \"scenario\": {\"name\": " << jsonString(sc.name) << ", \"file\": "
     << jsonString(sc.source) << ", \"hash\": " << jsonString(sc.hash) << ", \"overrides\": [";
@@ -440,13 +462,15 @@ int main(int argc, char** argv) {
   try {
     const double setup_wall = std::chrono::duration<double>(Clock::now() - setup_start).count();
     std::filesystem::create_directories(options.out + (options.snapshots > 0 ? "/snapshots" : ""));
+    std::signal(SIGINT, requestStop);
+    std::signal(SIGTERM, requestStop);
     const RunResult result = runSimulation(*sim, options);
     const auto stats = thin_ice::analyseLoadHistory(result.length, result.load);
     thin_ice::writeFileAtomically(options.out + "/summary.json",
                                   summaryJson(*sim, options, result, stats, setup_wall));
     if (options.profiles) writeProfiles(*sim, options.out + "/profiles.csv");
     printReport(*sim, options, stats);
-    return result.error.empty() ? 0 : 3;
+    return !result.error.empty() ? 3 : result.interrupted_by != 0 ? 4 : 0;
   } catch (const std::exception& e) {
     std::cerr << "thin_ice_run: " << e.what() << "\n";
     return 1;
