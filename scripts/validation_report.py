@@ -87,6 +87,82 @@ def compare_plot(root, sid, names, histories):
     return out
 
 
+def structure_of(summary):
+    """The run's structure section (scenario file with its structure.* overrides), or None."""
+    try:
+        import yaml
+        with open(summary["scenario"]["file"]) as f:
+            st = dict(yaml.safe_load(f)["structure"])
+        bottom_depth = None
+        with open(summary["scenario"]["file"]) as f:
+            bottom_depth = float((yaml.safe_load(f).get("bottom") or {}).get("depth", 0.25))
+    except (OSError, KeyError, TypeError, ValueError):
+        return None
+    for o in summary["scenario"].get("overrides", []):
+        key, value = o.split("=", 1)
+        if key.startswith("structure."):
+            st[key.split(".", 1)[1]] = float(value)
+        if key == "bottom.depth":
+            bottom_depth = float(value)
+    st["bottom_depth"] = bottom_depth
+    return st
+
+
+def profile_plot(root, name, summary):
+    """docs/validation/RUN/profiles.png from RUN/profiles.csv: the rubble pile above water seen
+    from the side (highest cell top per 0.1 m bin along x) and from above (farthest cell from the
+    toe per 0.1 m bin along y), drawn beside the structure, as the paper's Figs. 13 and 15."""
+    path = os.path.join(root, name, "profiles.csv")
+    st = structure_of(summary)
+    if not os.path.exists(path) or st is None:
+        return None
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        return None
+    side, top = [], []
+    with open(path, newline="") as f:
+        for r in csv.DictReader(f):
+            (side if r["profile"] == "side" else top).append((float(r["coordinate_m"]), float(r["value_m"])))
+    toe, angle = float(st["toe_x"]), math.radians(float(st["angle_deg"]))
+    height, width, depth = float(st["height"]), float(st["width"]), st["bottom_depth"]
+    fig, (ax_side, ax_top) = plt.subplots(1, 2, figsize=(11, 4.2))
+    # Side view: x towards the structure, z up; the face from the false bottom to its top.
+    xs = [x for x, _ in side]
+    ax_side.bar(xs, [z for _, z in side], width=0.1, color="#9ecae1", edgecolor="#3182bd", lw=0.5,
+                label="highest ice top above water, per 0.1 m")
+    ax_side.plot([toe - depth / math.tan(angle), toe + height / math.tan(angle)], [-depth, height], color="black",
+                 lw=2, label=f"structure face ({math.degrees(angle):.0f} deg)")
+    ax_side.axhline(0.0, color="#2ca02c", lw=0.8, ls="--", label="waterline")
+    ax_side.set_xlim(min(xs) - 0.1, toe + height / math.tan(angle) + 0.1)
+    ax_side.set_ylim(-depth, max(height, max((z for _, z in side), default=0.0)) * 1.05)
+    ax_side.set_xlabel("x [m]")
+    ax_side.set_ylabel("z [m]")
+    ax_side.set_title("side profile")
+    ax_side.set_aspect("equal")
+    ax_side.legend(fontsize=7, loc="upper left")
+    # Top view: y across, x towards the structure; the pile's reach from the toe per bin.
+    ys = [y for y, _ in top]
+    ax_top.barh(ys, [e for _, e in top], left=[toe - e for _, e in top], height=0.1, color="#9ecae1",
+                edgecolor="#3182bd", lw=0.5, label="ice above water, reach from the toe per 0.1 m")
+    ax_top.plot([toe, toe], [-0.5 * width, 0.5 * width], color="black", lw=2, label="structure toe (waterline)")
+    ax_top.set_xlabel("x [m]")
+    ax_top.set_ylabel("y [m]")
+    ax_top.set_title("top profile")
+    reach = max((e for _, e in top), default=0.0)
+    ax_top.set_xlim(toe - max(1.0, 1.2 * reach), toe + 0.3)
+    ax_top.legend(fontsize=7, loc="upper left")
+    fig.suptitle(f"{name}: rubble pile at L = {summary.get('pushed_length_m', float('nan')):.2f} m "
+                 f"(model only: the experiment's profiles, Fig. 13, are drawings without data)")
+    fig.tight_layout()
+    out = os.path.join(root, name, "profiles.png")
+    fig.savefig(out, dpi=110)
+    plt.close(fig)
+    return out
+
+
 def pct(model, reference):
     if model is None or reference in (None, 0) or (isinstance(model, float) and math.isnan(model)):
         return "-"
@@ -210,6 +286,24 @@ def main():
             if out:
                 plots += [f"![{sid} and its variants]({rel}/{sid}/variants.png)", ""]
     lines += plots
+
+    # Rubble pile profiles: strong ice first (the paper's Fig. 15), then the longest run of each type.
+    pile = []
+    longest = {}
+    for name, summary in runs.items():
+        kind = name[0]
+        if re.fullmatch(r"[WMS]-\d(-long)?", name) and summary.get("pushed_length_m", 0) > longest.get(kind, ("", 0))[1]:
+            longest[kind] = (name, summary.get("pushed_length_m", 0))
+    shown = [n for n in ("S-1", "S-2") if n in runs] + [v[0] for k, v in sorted(longest.items()) if v[0] not in ("S-1", "S-2")]
+    for name in shown:
+        if profile_plot(a.runs, name, runs[name]):
+            pile += [f"### {name}", "", f"![{name} rubble profiles]({rel}/{name}/profiles.png)", ""]
+    lines += ["## Rubble pile profiles", ""]
+    lines += (["The ice above the waterline at the end of each run: strong ice (S-1, S-2), as the paper's",
+               "Fig. 15 asks, and the longest run of each ice type. Heights are cell tops (z + h/2; cells do not",
+               "tilt in this 2.5-D model); the top view bins by cell centroid, so it is good to about a cell radius.",
+               ""] + pile if pile else ["No run with profiles.csv yet."])
+    lines.append("")
 
     calibration = os.path.join(a.runs, "calibration.md")
     if os.path.exists(calibration):

@@ -102,8 +102,7 @@ Model buildModel(const Params& params, const IceSheet& sheet, const std::string&
   m.initial.resize(n);
   const IceParams& ice = params.ice;
   const double h = ice.thickness;
-  // Floating equilibrium: draft rho_i / rho_w h, so the centroid sits at h/2 - draft.
-  const double z_float = 0.5 * h - ice.density / params.water.density * h;
+  const double z_float = floatingCentroidHeight(h, ice.density, params.water.density);
   double largest_radius = 0.0;
   for (int k = 0; k < n; ++k) {
     const CellGeometry& c = sheet.cells[k];

@@ -353,13 +353,7 @@ double widthScale(const Simulation& sim) {
 /// The rubble pile's side profile (height against x, 0.1 m bins from 4 m in front of the toe) and
 /// top profile (distance from the toe against y), as the paper's Figs. 13 and 15.
 void writeProfiles(const Simulation& sim, const std::string& path) {
-  constexpr double kBin = 0.1, kReach = 4.0;  // [m]
-  const thin_ice::RubbleProfiles p = thin_ice::computeRubbleProfiles(sim.cells(), sim.params(), kBin, kReach);
-  std::ostringstream out;
-  out << "profile,coordinate_m,value_m\n";
-  for (std::size_t k = 0; k < p.side_x.size(); ++k) out << "side," << p.side_x[k] << "," << p.side_height[k] << "\n";
-  for (std::size_t k = 0; k < p.top_y.size(); ++k) out << "top," << p.top_y[k] << "," << p.top_extent[k] << "\n";
-  thin_ice::writeFileAtomically(path, out.str());
+  thin_ice::writeFileAtomically(path, thin_ice::rubbleProfilesCsv(thin_ice::computeRubbleProfiles(sim.cells(), sim.params())));
 }
 
 std::string summaryJson(const Simulation& sim, const Options& o, const RunResult& r,

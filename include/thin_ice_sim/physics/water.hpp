@@ -25,6 +25,12 @@ TIS_HD double submergedThickness(double z, double h) {
   return below <= 0.0 ? 0.0 : (below >= h ? h : below);
 }
 
+/// Height [m] of the centroid of a cell floating at rest: its draft is rho_i / rho_w h, so the
+/// centroid sits at h/2 - draft (z = 0 at the waterline).
+TIS_HD double floatingCentroidHeight(double thickness, double ice_density, double water_density) {
+  return 0.5 * thickness - ice_density / water_density * thickness;
+}
+
 struct WaterForce {
   Vec2 horizontal;  ///< [N]
   double vertical;  ///< [N], gravity + buoyancy + heave drag

@@ -1,0 +1,43 @@
+// Reading back what thin_ice_run wrote (src/tools/thin_ice_run.cpp): the scenario of a run, its
+// snapshot list and the cells of one snapshot, for tools that analyse a finished run.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "thin_ice_sim/scenario.hpp"
+#include "thin_ice_sim/simulation.hpp"
+
+namespace thin_ice {
+
+/// Rows of a CSV file with a header line, each as column name -> text. Throws std::runtime_error
+/// naming the file when it cannot be read.
+using CsvRow = std::map<std::string, std::string>;
+std::vector<CsvRow> readCsv(const std::string& path);
+
+/// The number in `column` of `row`; throws std::runtime_error naming `path` and the column when it
+/// is missing or not a number.
+double csvNumber(const CsvRow& row, const std::string& column, const std::string& path);
+
+/// The scenario (file and overrides) named by RUN/summary.json, loaded anew. Relative scenario
+/// paths are taken from the current directory, as thin_ice_run was given them. Throws
+/// std::runtime_error when RUN is not a run directory or when the scenario's hash differs from the
+/// run's (its sheet and bonds would not be the run's).
+Scenario loadRunScenario(const std::string& run_dir);
+
+/// One entry of RUN/snapshots/index.csv.
+struct SnapshotEntry {
+  std::string file;   ///< path of the cells CSV
+  long loads_row = 0; ///< the loads.csv data row it belongs to (1-based), 0: the sheet at rest
+  double time = 0.0;  ///< [s]
+  double pushed_length = 0.0;  ///< [m]
+};
+/// Throws std::runtime_error when the run has no snapshots (it needs --snapshots N).
+std::vector<SnapshotEntry> readSnapshotIndex(const std::string& run_dir);
+
+/// The cells of a snapshot: pose and whether each is in the intact sheet (velocities are not
+/// written, so they are zero).
+std::vector<CellSnapshot> readCellSnapshot(const std::string& path);
+
+}  // namespace thin_ice

@@ -1,0 +1,100 @@
+#include "thin_ice_sim/run_directory.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+
+namespace thin_ice {
+namespace {
+
+std::vector<std::string> splitCsvLine(const std::string& line) {
+  std::vector<std::string> fields;
+  std::stringstream in(line);
+  std::string field;
+  while (std::getline(in, field, ',')) fields.push_back(field);
+  return fields;
+}
+
+}  // namespace
+
+std::vector<CsvRow> readCsv(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw std::runtime_error("cannot read " + path);
+  std::string line;
+  if (!std::getline(in, line)) throw std::runtime_error(path + " is empty");
+  const std::vector<std::string> header = splitCsvLine(line);
+  std::vector<CsvRow> rows;
+  while (std::getline(in, line)) {
+    const std::vector<std::string> fields = splitCsvLine(line);
+    CsvRow row;
+    for (size_t c = 0; c < header.size() && c < fields.size(); ++c) row[header[c]] = fields[c];
+    rows.push_back(row);
+  }
+  return rows;
+}
+
+double csvNumber(const CsvRow& row, const std::string& column, const std::string& path) {
+  const auto it = row.find(column);
+  if (it == row.end()) throw std::runtime_error(path + ": no column " + column);
+  try {
+    size_t used = 0;
+    const double value = std::stod(it->second, &used);
+    if (used == it->second.size()) return value;
+  } catch (const std::exception&) {
+  }
+  throw std::runtime_error(path + ": column " + column + " holds '" + it->second + "', not a number");
+}
+
+Scenario loadRunScenario(const std::string& run_dir) {
+  const std::string summary_path = run_dir + "/summary.json";
+  if (!std::ifstream(summary_path)) throw std::runtime_error("no summary.json: not a thin_ice_run output directory");
+  const YAML::Node summary = YAML::LoadFile(summary_path);  // JSON is YAML
+  const std::string file = summary["scenario"]["file"].as<std::string>();
+  std::vector<std::string> overrides;
+  for (const YAML::Node& o : summary["scenario"]["overrides"]) overrides.push_back(o.as<std::string>());
+  Scenario scenario = loadScenario(file, overrides);
+  const std::string run_hash = summary["scenario"]["hash"].as<std::string>();
+  if (scenario.hash != run_hash) {
+    throw std::runtime_error("scenario " + file + " has changed since the run (hash " + scenario.hash + ", the run's " +
+                             run_hash + "): its sheet and bonds would not be the run's");
+  }
+  return scenario;
+}
+
+std::vector<SnapshotEntry> readSnapshotIndex(const std::string& run_dir) {
+  const std::string index_path = run_dir + "/snapshots/index.csv";
+  if (!std::ifstream(index_path)) throw std::runtime_error("no snapshots/index.csv: the run needs --snapshots N");
+  std::vector<SnapshotEntry> entries;
+  for (const CsvRow& row : readCsv(index_path)) {
+    SnapshotEntry e;
+    const std::string name = row.count("file") ? row.at("file") : "";
+    // cells_RRRRRR.csv, RRRRRR: the loads.csv row (thin_ice_run's writeSnapshot)
+    if (name.size() != 16 || name.compare(0, 6, "cells_") != 0) {
+      throw std::runtime_error(index_path + ": '" + name + "' is not a cells_RRRRRR.csv name");
+    }
+    e.file = run_dir + "/snapshots/" + name;
+    e.loads_row = std::stol(name.substr(6, 6));
+    e.time = csvNumber(row, "time_s", index_path);
+    e.pushed_length = csvNumber(row, "pushed_length_m", index_path);
+    entries.push_back(e);
+  }
+  return entries;
+}
+
+std::vector<CellSnapshot> readCellSnapshot(const std::string& path) {
+  std::vector<CellSnapshot> cells;
+  for (const CsvRow& row : readCsv(path)) {
+    CellSnapshot c{};
+    c.x = csvNumber(row, "x_m", path);
+    c.y = csvNumber(row, "y_m", path);
+    c.z = csvNumber(row, "z_m", path);
+    c.yaw = csvNumber(row, "yaw_rad", path);
+    c.in_intact_sheet = csvNumber(row, "in_intact_sheet", path) != 0.0;
+    cells.push_back(c);
+  }
+  return cells;
+}
+
+}  // namespace thin_ice

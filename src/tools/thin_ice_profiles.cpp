@@ -1,0 +1,62 @@
+// thin_ice_profiles: the rubble pile's side and top profiles (thin_ice_sim/rubble_profiles.hpp)
+// of a finished run, from one of its snapshots, written as RUN_DIR/profiles.csv (the file
+// thin_ice_run --profiles writes at the end of a run).
+//   thin_ice_profiles RUN_DIR [--snapshot cells_RRRRRR.csv] [--out FILE]
+// Default: the last snapshot, which thin_ice_run takes at the end of the run. The scenario is the
+// one RUN_DIR/summary.json names (run from the directory the run was started in).
+// Exit status: 0 done; 2 bad arguments, run directory or scenario.
+#include <cstdio>
+#include <exception>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "thin_ice_sim/rubble_profiles.hpp"
+#include "thin_ice_sim/run_directory.hpp"
+#include "thin_ice_sim/sheet_io.hpp"
+
+int main(int argc, char** argv) {
+  const char* usage = "usage: thin_ice_profiles RUN_DIR [--snapshot cells_RRRRRR.csv] [--out FILE]\n";
+  std::string run, snapshot, out;
+  for (int a = 1; a < argc; ++a) {
+    const std::string arg = argv[a];
+    if (arg == "-h" || arg == "--help") {
+      std::printf("%s", usage);
+      return 0;
+    }
+    if ((arg == "--snapshot" || arg == "--out") && a + 1 < argc) {
+      (arg == "--snapshot" ? snapshot : out) = argv[++a];
+    } else if (arg.rfind("--", 0) != 0 && run.empty()) {
+      run = arg;
+    } else {
+      std::fprintf(stderr, "thin_ice_profiles: unexpected argument '%s'\n%s", arg.c_str(), usage);
+      return 2;
+    }
+  }
+  if (run.empty()) {
+    std::fprintf(stderr, "thin_ice_profiles: a run directory is needed\n%s", usage);
+    return 2;
+  }
+  try {
+    const thin_ice::Scenario scenario = thin_ice::loadRunScenario(run);
+    const std::vector<thin_ice::SnapshotEntry> index = thin_ice::readSnapshotIndex(run);
+    if (index.empty()) throw std::runtime_error("snapshots/index.csv lists no snapshot");
+    const thin_ice::SnapshotEntry* chosen = &index.back();
+    if (!snapshot.empty()) {
+      chosen = nullptr;
+      for (const thin_ice::SnapshotEntry& e : index) {
+        if (e.file == run + "/snapshots/" + snapshot) chosen = &e;
+      }
+      if (!chosen) throw std::runtime_error("--snapshot " + snapshot + ": not in snapshots/index.csv");
+    }
+    const thin_ice::RubbleProfiles profiles =
+        thin_ice::computeRubbleProfiles(thin_ice::readCellSnapshot(chosen->file), scenario.params);
+    const std::string path = out.empty() ? run + "/profiles.csv" : out;
+    thin_ice::writeFileAtomically(path, thin_ice::rubbleProfilesCsv(profiles));
+    std::printf("wrote %s from %s (L = %.4g m)\n", path.c_str(), chosen->file.c_str(), chosen->pushed_length);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "thin_ice_profiles: %s: %s\n", run.c_str(), e.what());
+    return 2;
+  }
+  return 0;
+}
