@@ -5,6 +5,7 @@
 // rho_i = 920 kg/m^3, E_v = 328 MPa, nu = 0.3, n_v = 1; water rho_w = 1000 kg/m^3, g = 9.81 m/s^2.
 #include <gtest/gtest.h>
 
+#include <utility>
 #include <vector>
 
 #include "thin_ice_sim/front_row_balance.hpp"
@@ -25,6 +26,14 @@ Fixture squareGrid() {
   f.params.sheet.jitter = 0.0;
   f.params.sheet.lloyd_iterations = 0;
   f.params.numerics.time_step = 1e-7;
+  // The values the expected numbers below are worked from (set here, not taken from defaults).
+  f.params.ice.thickness = 0.051;
+  f.params.ice.density = 920.0;
+  f.params.ice.vertical_modulus = 328e6;
+  f.params.ice.poisson_ratio = 0.3;
+  f.params.ice.smoothing_exponent_v = 1.0;
+  f.params.water.density = 1000.0;
+  f.params.water.gravity = 9.81;
   f.sheet = thin_ice::generateIceSheet(f.params.sheet);
   f.model = thin_ice::buildModel(f.params, f.sheet, "test");
   return f;
@@ -98,6 +107,26 @@ TEST(FrontRowBalance, ALiftedRowBehindPushesTheFrontRowUp) {
   EXPECT_NEAR(b.bond_force, -87046.15, 0.01);
   EXPECT_EQ(b.lost_buoyancy, 0.0);
   EXPECT_NEAR(b.rear_lift, 0.005, 1e-15);
+}
+
+TEST(FrontRowBalance, TheSameWhicheverCellOfABondIsI) {
+  // Cells are numbered x fastest, so on this grid the front cell of every cut bond is j. Written
+  // the other way round (i and j swapped, their anchors swapped, the normal reversed: the same
+  // bond), the front cell is i, and the balance must not change.
+  const Fixture f = squareGrid();
+  thin_ice::Model swapped = f.model;
+  for (size_t b = 0; b < swapped.bond_rest.size(); ++b) {
+    std::swap(swapped.bond_i[b], swapped.bond_j[b]);
+    thin_ice::BondRest& r = swapped.bond_rest[b];
+    std::swap(r.anchor_i, r.anchor_j);
+    r.normal = -r.normal;
+  }
+  const thin_ice::FrontRow row = thin_ice::frontRow(swapped, f.sheet);
+  ASSERT_EQ(row.cut_bonds.size(), 3u);
+  for (int b : row.cut_bonds) EXPECT_NEAR(f.sheet.cells[swapped.bond_i[b]].centroid.x, 0.9, 1e-9);
+  std::vector<thin_ice::CellPose> poses = atRest(f.model);
+  for (int k : row.cells) poses[k].z += 0.005;
+  EXPECT_NEAR(thin_ice::frontRowBalance(swapped, row, poses).bond_force, 87046.15, 0.01);
 }
 
 TEST(FrontRowBalance, RefusesASnapshotOfAnotherSheet) {

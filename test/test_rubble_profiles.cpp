@@ -47,7 +47,7 @@ TEST(RubbleProfiles, BinsSpanFromTheReachToTheTopOfTheFace) {
 }
 
 TEST(RubbleProfiles, LevelIceAndSmallHeaveAreNotPile) {
-  // Floating level ice (top 3.9 mm above water) and a cell heaved 20 mm (< h/2 = 25.5 mm) are
+  // Floating level ice (top h - draft = 4.08 mm above water) and a cell heaved 20 mm (< h/2 = 25.5 mm) are
   // above the waterline but are not pile: neither profile sees them.
   const std::vector<thin_ice::CellSnapshot> cells = {cellAt(9.55, 0.05, kFloat), cellAt(9.25, -0.35, kFloat + 0.02)};
   const thin_ice::RubbleProfiles r = thin_ice::computeRubbleProfiles(cells, setUp());
@@ -59,15 +59,15 @@ TEST(RubbleProfiles, PileCellsGiveTheHighestTopAndTheFarthestReach) {
   // B at (9.55, 0.05), lifted 0.1 m: top z + h/2 = 0.07858 + 0.0255 = 0.10408 m, in side bin 35
   // (centre 9.55 m) and top bin 10 (centre 0.05 m), 0.45 m from the toe.
   // E at (9.52, 0.07), z = 0.2 m: the same two bins, higher (0.2255 m) and farther (0.48 m).
-  // D at (8.0, -0.95), z = 0.05 m: top 0.0755 m in side bin 20 (centre 8.05 m), top bin 0, 2.0 m out.
+  // D at (8.02, -0.95), z = 0.05 m: top 0.0755 m in side bin 20 (centre 8.05 m), top bin 0, 1.98 m out.
   // A cell pushed under water (z = -0.2 m) is not seen from above.
   const std::vector<thin_ice::CellSnapshot> cells = {cellAt(9.55, 0.05, kFloat + 0.1), cellAt(9.52, 0.07, 0.2),
-                                                     cellAt(8.0, -0.95, 0.05), cellAt(9.05, 0.55, -0.2)};
+                                                     cellAt(8.02, -0.95, 0.05), cellAt(9.05, 0.55, -0.2)};
   const thin_ice::RubbleProfiles r = thin_ice::computeRubbleProfiles(cells, setUp());
   EXPECT_NEAR(r.side_height[35], 0.2255, 1e-12);
   EXPECT_NEAR(r.side_height[20], 0.0755, 1e-12);
   EXPECT_NEAR(r.top_extent[10], 0.48, 1e-12);
-  EXPECT_NEAR(r.top_extent[0], 2.0, 1e-12);
+  EXPECT_NEAR(r.top_extent[0], 1.98, 1e-12);
   int side_bins = 0, top_bins = 0;
   for (double v : r.side_height) side_bins += v > 0.0;
   for (double v : r.top_extent) top_bins += v > 0.0;
@@ -76,11 +76,11 @@ TEST(RubbleProfiles, PileCellsGiveTheHighestTopAndTheFarthestReach) {
 }
 
 TEST(RubbleProfiles, CsvListsSideThenTopBins) {
-  const thin_ice::RubbleProfiles r = thin_ice::computeRubbleProfiles({cellAt(8.0, -0.95, 0.05)}, setUp());
+  const thin_ice::RubbleProfiles r = thin_ice::computeRubbleProfiles({cellAt(8.02, -0.95, 0.05)}, setUp());
   const std::string csv = thin_ice::rubbleProfilesCsv(r);
   EXPECT_EQ(csv.rfind("profile,coordinate_m,value_m\nside,6.05,0\n", 0), 0u);
   EXPECT_NE(csv.find("side,8.05,0.0755\n"), std::string::npos);
-  EXPECT_NE(csv.find("top,-0.95,2\n"), std::string::npos);
+  EXPECT_NE(csv.find("top,-0.95,1.98\n"), std::string::npos);
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 46 + 20);
 }
 

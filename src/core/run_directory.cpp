@@ -2,6 +2,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -26,10 +27,15 @@ std::vector<CsvRow> readCsv(const std::string& path) {
   if (!std::getline(in, line)) throw std::runtime_error(path + " is empty");
   const std::vector<std::string> header = splitCsvLine(line);
   std::vector<CsvRow> rows;
-  while (std::getline(in, line)) {
+  for (long number = 2; std::getline(in, line); ++number) {
+    if (line.empty()) continue;
     const std::vector<std::string> fields = splitCsvLine(line);
+    if (fields.size() != header.size()) {
+      throw std::runtime_error(path + " line " + std::to_string(number) + ": " + std::to_string(fields.size()) +
+                               " fields, the header has " + std::to_string(header.size()) + " (a truncated file?)");
+    }
     CsvRow row;
-    for (size_t c = 0; c < header.size() && c < fields.size(); ++c) row[header[c]] = fields[c];
+    for (size_t c = 0; c < header.size(); ++c) row[header[c]] = fields[c];
     rows.push_back(row);
   }
   return rows;
@@ -70,9 +76,12 @@ std::vector<SnapshotEntry> readSnapshotIndex(const std::string& run_dir) {
   for (const CsvRow& row : readCsv(index_path)) {
     SnapshotEntry e;
     const std::string name = row.count("file") ? row.at("file") : "";
-    // cells_RRRRRR.csv, RRRRRR: the loads.csv row (thin_ice_run's writeSnapshot)
-    if (name.size() != 16 || name.compare(0, 6, "cells_") != 0) {
-      throw std::runtime_error(index_path + ": '" + name + "' is not a cells_RRRRRR.csv name");
+    // cells_RRRRRR.csv, RRRRRR: the loads.csv row, six digits (thin_ice_run's writeSnapshot)
+    const bool digits = name.size() == 16 && std::all_of(name.begin() + 6, name.begin() + 12, [](char c) {
+      return c >= '0' && c <= '9';
+    });
+    if (!digits || name.compare(0, 6, "cells_") != 0 || name.compare(12, 4, ".csv") != 0) {
+      throw std::runtime_error(index_path + ": file '" + name + "' is not a cells_RRRRRR.csv name (six digits)");
     }
     e.file = run_dir + "/snapshots/" + name;
     e.loads_row = std::stol(name.substr(6, 6));

@@ -42,14 +42,18 @@ int main(int argc, char** argv) {
     const thin_ice::IceSheet sheet = thin_ice::generateIceSheet(scenario.params.sheet);
     const thin_ice::Model model = thin_ice::buildModel(scenario.params, sheet, scenario.source);
     const thin_ice::FrontRow row = thin_ice::frontRow(model, sheet);
-    std::printf("front row: %zu cells, %.3f m^2, weight %.0f N; %zu bonds across the cut to %zu cells\n",
-                row.cells.size(), row.area, row.weight, row.cut_bonds.size(), row.rear_cells.size());
+    // The whole table is made before any of it is printed, so a bad snapshot leaves no half table.
+    std::string table;
+    char line[512];
+    std::snprintf(line, sizeof(line), "front row: %zu cells, %.3f m^2, weight %.0f N; %zu bonds across the cut to %zu cells\n",
+                  row.cells.size(), row.area, row.weight, row.cut_bonds.size(), row.rear_cells.size());
+    table += line;
 
     const std::string loads_path = run + "/loads.csv";
     const auto loads = thin_ice::readCsv(loads_path);
-    std::printf("| L [m] | structure's vertical load [N] | bonds across the cut [N] | buoyancy lost by the front row [N] "
-                "| sum [N] | front row lift [mm] | row behind lift [mm] | broken bonds |\n");
-    std::printf("|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    table += "| L [m] | structure's vertical load [N] | bonds across the cut [N] | buoyancy lost by the front row [N] "
+             "| sum [N] | front row lift [mm] | row behind lift [mm] | broken bonds |\n";
+    table += "|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const thin_ice::SnapshotEntry& entry : index) {
       if (entry.loads_row == 0) continue;  // the sheet at rest
       if (entry.loads_row > static_cast<long>(loads.size())) {
@@ -61,12 +65,14 @@ int main(int argc, char** argv) {
       const thin_ice::FrontRowBalance b = thin_ice::frontRowBalance(model, row, poses);
       // The structure pushes the ice down: minus its vertical load on the structure.
       const double structure_down = -thin_ice::csvNumber(load, "vertical_raw_N", loads_path);
-      std::printf("| %.4f | %.0f | %.0f | %.0f | %.0f | %.1f | %.1f | %.0f |\n",
-                  thin_ice::csvNumber(load, "pushed_length_m", loads_path), shown(structure_down, 0),
-                  shown(b.bond_force, 0), shown(b.lost_buoyancy, 0), shown(b.bond_force + b.lost_buoyancy, 0),
-                  shown(1e3 * b.front_lift, 1), shown(1e3 * b.rear_lift, 1),
-                  thin_ice::csvNumber(load, "broken_bonds", loads_path));
+      std::snprintf(line, sizeof(line), "| %.4f | %.0f | %.0f | %.0f | %.0f | %.1f | %.1f | %.0f |\n",
+                    thin_ice::csvNumber(load, "pushed_length_m", loads_path), shown(structure_down, 0),
+                    shown(b.bond_force, 0), shown(b.lost_buoyancy, 0), shown(b.bond_force + b.lost_buoyancy, 0),
+                    shown(1e3 * b.front_lift, 1), shown(1e3 * b.rear_lift, 1),
+                    thin_ice::csvNumber(load, "broken_bonds", loads_path));
+      table += line;
     }
+    std::fputs(table.c_str(), stdout);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "thin_ice_edge_balance: %s: %s\n", run.c_str(), e.what());
     return 2;

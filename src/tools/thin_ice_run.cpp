@@ -16,6 +16,7 @@
 #include <csignal>
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <chrono>
 #include <cmath>
@@ -259,11 +260,13 @@ struct RunResult {
 };
 
 /// The signal that asked the run to stop (0: none). The handler only records it; the stepping
-/// loop looks at it after each output interval.
-volatile std::sig_atomic_t g_stop_signal = 0;
+/// loop looks at it after each output interval. Any thread (OpenMP's included) may take the
+/// signal, so it is a lock-free atomic rather than a volatile sig_atomic_t.
+std::atomic<int> g_stop_signal{0};
+static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs a lock-free atomic");
 
 extern "C" void requestStop(int signal_number) {
-  g_stop_signal = signal_number;
+  g_stop_signal.store(signal_number);
   std::signal(signal_number, SIG_DFL);  // a second signal ends the process at once
 }
 
@@ -324,7 +327,8 @@ RunResult runSimulation(Simulation& sim, const Options& o) {
     csv << loadsRow(r.last, panels) << std::flush;
     r.length.push_back(r.last.pushed_length);
     r.load.push_back(r.last.horizontal_calibrated);
-    r.interrupted_by = g_stop_signal;
+    // A signal in the interval that reached the target changes nothing: the run is complete.
+    r.interrupted_by = stepsLeft() > 0 ? g_stop_signal.load() : 0;
     const bool last_row = stepsLeft() <= 0 || r.interrupted_by != 0;
     left = r.interrupted_by != 0 ? 0 : stepsLeft();
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
