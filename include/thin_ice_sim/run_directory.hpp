@@ -22,9 +22,11 @@ double csvNumber(const CsvRow& row, const std::string& column, const std::string
 
 /// The scenario (file and overrides) named by RUN/summary.json, loaded anew. Relative scenario
 /// paths are taken from the current directory, as thin_ice_run was given them. Throws
-/// std::runtime_error when RUN is not a run directory or when the scenario's hash differs from the
-/// run's (its sheet and bonds would not be the run's).
-Scenario loadRunScenario(const std::string& run_dir);
+/// std::runtime_error when RUN is not a run directory, or when the scenario's hash (of the file's
+/// text and the overrides) differs from the run's: its sheet and bonds may not be the run's.
+/// With accept_changed_file the hash is not checked (for a file whose comments alone changed,
+/// which the caller has checked); `warning` then says so.
+Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, std::string& warning);
 
 /// One entry of RUN/snapshots/index.csv.
 struct SnapshotEntry {

@@ -53,7 +53,7 @@ double csvNumber(const CsvRow& row, const std::string& column, const std::string
   throw std::runtime_error(path + ": column " + column + " holds '" + it->second + "', not a number");
 }
 
-Scenario loadRunScenario(const std::string& run_dir) {
+Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, std::string& warning) {
   const std::string summary_path = run_dir + "/summary.json";
   if (!std::ifstream(summary_path)) throw std::runtime_error("no summary.json: not a thin_ice_run output directory");
   const YAML::Node summary = YAML::LoadFile(summary_path);  // JSON is YAML
@@ -62,9 +62,15 @@ Scenario loadRunScenario(const std::string& run_dir) {
   for (const YAML::Node& o : summary["scenario"]["overrides"]) overrides.push_back(o.as<std::string>());
   Scenario scenario = loadScenario(file, overrides);
   const std::string run_hash = summary["scenario"]["hash"].as<std::string>();
+  warning.clear();
   if (scenario.hash != run_hash) {
-    throw std::runtime_error("scenario " + file + " has changed since the run (hash " + scenario.hash + ", the run's " +
-                             run_hash + "): its sheet and bonds would not be the run's");
+    const std::string what = "scenario " + file + " has changed since the run (hash " + scenario.hash + ", the run's " +
+                             run_hash + ")";
+    if (!accept_changed_file) {
+      throw std::runtime_error(what + ": its sheet and bonds may not be the run's (--accept-changed-scenario if only "
+                               "its comments changed)");
+    }
+    warning = what + "; taken as the run's, as asked";
   }
   return scenario;
 }

@@ -1,7 +1,7 @@
 // thin_ice_edge_balance: the vertical force balance of the sheet's front row in a run, snapshot by
 // snapshot (thin_ice_sim/front_row_balance.hpp), as a Markdown table beside the structure's
 // vertical load on the ice from loads.csv (the mean over that output interval).
-//   thin_ice_edge_balance RUN_DIR
+//   thin_ice_edge_balance RUN_DIR [--accept-changed-scenario]
 // RUN_DIR is a thin_ice_run output with --snapshots; its scenario is the one summary.json names
 // (thin_ice_sim/run_directory.hpp: run from the directory the run was started in).
 // Exit status: 0 done; 2 bad arguments, run directory or scenario.
@@ -25,19 +25,35 @@ double shown(double v, int decimals) {
 
 }  // namespace
 
+constexpr const char* kTool = "thin_ice_edge_balance";
+
 int main(int argc, char** argv) {
-  const char* usage = "usage: thin_ice_edge_balance RUN_DIR\n";
-  if (argc == 2 && (std::string(argv[1]) == "-h" || std::string(argv[1]) == "--help")) {
-    std::printf("%s", usage);
-    return 0;
+  const char* usage = "usage: thin_ice_edge_balance RUN_DIR [--accept-changed-scenario]\n";
+  std::string run;
+  bool accept_changed = false;
+  for (int a = 1; a < argc; ++a) {
+    const std::string arg = argv[a];
+    if (arg == "-h" || arg == "--help") {
+      std::printf("%s", usage);
+      return 0;
+    }
+    if (arg == "--accept-changed-scenario") {
+      accept_changed = true;
+    } else if (arg.rfind("--", 0) != 0 && run.empty()) {
+      run = arg;
+    } else {
+      std::fprintf(stderr, "%s: unexpected argument '%s'\n%s", kTool, arg.c_str(), usage);
+      return 2;
+    }
   }
-  if (argc != 2) {
-    std::fprintf(stderr, "thin_ice_edge_balance: one run directory is needed\n%s", usage);
+  if (run.empty()) {
+    std::fprintf(stderr, "%s: one run directory is needed\n%s", kTool, usage);
     return 2;
   }
-  const std::string run = argv[1];
   try {
-    const thin_ice::Scenario scenario = thin_ice::loadRunScenario(run);
+    std::string warning;
+    const thin_ice::Scenario scenario = thin_ice::loadRunScenario(run, accept_changed, warning);
+    if (!warning.empty()) std::fprintf(stderr, "%s: warning: %s\n", kTool, warning.c_str());
     const std::vector<thin_ice::SnapshotEntry> index = thin_ice::readSnapshotIndex(run);
     const thin_ice::IceSheet sheet = thin_ice::generateIceSheet(scenario.params.sheet);
     const thin_ice::Model model = thin_ice::buildModel(scenario.params, sheet, scenario.source);

@@ -1,7 +1,7 @@
 // thin_ice_profiles: the rubble pile's side and top profiles (thin_ice_sim/rubble_profiles.hpp)
 // of a finished run, from one of its snapshots, written as RUN_DIR/profiles.csv (the file
 // thin_ice_run --profiles writes at the end of a run).
-//   thin_ice_profiles RUN_DIR [--snapshot cells_RRRRRR.csv] [--out FILE]
+//   thin_ice_profiles RUN_DIR [--snapshot cells_RRRRRR.csv] [--out FILE] [--accept-changed-scenario]
 // Default: the last snapshot, which thin_ice_run takes at the end of the run. The scenario is the
 // one RUN_DIR/summary.json names (run from the directory the run was started in).
 // Exit status: 0 done; 2 bad arguments, run directory or scenario.
@@ -15,16 +15,22 @@
 #include "thin_ice_sim/run_directory.hpp"
 #include "thin_ice_sim/sheet_io.hpp"
 
+constexpr const char* kTool = "thin_ice_profiles";
+
 int main(int argc, char** argv) {
-  const char* usage = "usage: thin_ice_profiles RUN_DIR [--snapshot cells_RRRRRR.csv] [--out FILE]\n";
+  const char* usage =
+      "usage: thin_ice_profiles RUN_DIR [--snapshot cells_RRRRRR.csv] [--out FILE] [--accept-changed-scenario]\n";
   std::string run, snapshot, out;
+  bool accept_changed = false;
   for (int a = 1; a < argc; ++a) {
     const std::string arg = argv[a];
     if (arg == "-h" || arg == "--help") {
       std::printf("%s", usage);
       return 0;
     }
-    if ((arg == "--snapshot" || arg == "--out") && a + 1 < argc) {
+    if (arg == "--accept-changed-scenario") {
+      accept_changed = true;
+    } else if ((arg == "--snapshot" || arg == "--out") && a + 1 < argc) {
       (arg == "--snapshot" ? snapshot : out) = argv[++a];
     } else if (arg.rfind("--", 0) != 0 && run.empty()) {
       run = arg;
@@ -38,7 +44,9 @@ int main(int argc, char** argv) {
     return 2;
   }
   try {
-    const thin_ice::Scenario scenario = thin_ice::loadRunScenario(run);
+    std::string warning;
+    const thin_ice::Scenario scenario = thin_ice::loadRunScenario(run, accept_changed, warning);
+    if (!warning.empty()) std::fprintf(stderr, "%s: warning: %s\n", kTool, warning.c_str());
     const std::vector<thin_ice::SnapshotEntry> index = thin_ice::readSnapshotIndex(run);
     if (index.empty()) throw std::runtime_error("snapshots/index.csv lists no snapshot");
     const thin_ice::SnapshotEntry* chosen = &index.back();
