@@ -175,7 +175,8 @@ def profile_plot(root, name, summary):
 def pct(model, reference):
     if model is None or reference in (None, 0) or (isinstance(model, float) and math.isnan(model)):
         return "-"
-    return f"{100.0 * (model - reference) / reference:+.1f} %"
+    change = 100.0 * (model - reference) / reference
+    return f"{0.0 if abs(change) < 0.05 else change:+.1f} %"  # no "-0.0 %"
 
 
 def num(value, fmt="{:.0f}"):
