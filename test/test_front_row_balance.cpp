@@ -45,6 +45,14 @@ std::vector<thin_ice::CellPose> atRest(const thin_ice::Model& model) {
   return poses;
 }
 
+/// The balance with `lifted` cells raised by dz [m] from rest and the others at rest.
+thin_ice::FrontRowBalance liftedBalance(const thin_ice::Model& model, const thin_ice::FrontRow& row,
+                                        const std::vector<int>& lifted, double dz) {
+  std::vector<thin_ice::CellPose> poses = atRest(model);
+  for (int k : lifted) poses[k].z += dz;
+  return thin_ice::frontRowBalance(model, row, poses);
+}
+
 TEST(FrontRowBalance, FindsTheFrontRowAndItsBonds) {
   const Fixture f = squareGrid();
   ASSERT_EQ(f.model.cell_count, 15);
@@ -76,9 +84,7 @@ TEST(FrontRowBalance, ALiftedFrontRowIsPulledDownByItsBondsAndLosesBuoyancy) {
   // 1000 * 9.81 * 0.12 * 0.005 = 5.886 N.
   const Fixture f = squareGrid();
   const thin_ice::FrontRow row = thin_ice::frontRow(f.model, f.sheet);
-  std::vector<thin_ice::CellPose> poses = atRest(f.model);
-  for (int k : row.cells) poses[k].z += 0.005;
-  const thin_ice::FrontRowBalance b = thin_ice::frontRowBalance(f.model, row, poses);
+  const thin_ice::FrontRowBalance b = liftedBalance(f.model, row, row.cells, 0.005);
   EXPECT_NEAR(b.bond_force, 87046.15, 0.01);
   EXPECT_NEAR(b.lost_buoyancy, 5.886, 1e-9);
   EXPECT_NEAR(b.front_lift, 0.005, 1e-15);
@@ -90,9 +96,7 @@ TEST(FrontRowBalance, ARowOutOfTheWaterHasLostItsWeightAndTornBondsCarryNothing)
   // (55.234224 N, as its whole buoyancy held it at rest), and K_v(|dz| >= h) = 0.
   const Fixture f = squareGrid();
   const thin_ice::FrontRow row = thin_ice::frontRow(f.model, f.sheet);
-  std::vector<thin_ice::CellPose> poses = atRest(f.model);
-  for (int k : row.cells) poses[k].z += 0.06;
-  const thin_ice::FrontRowBalance b = thin_ice::frontRowBalance(f.model, row, poses);
+  const thin_ice::FrontRowBalance b = liftedBalance(f.model, row, row.cells, 0.06);
   EXPECT_EQ(b.bond_force, 0.0);
   EXPECT_NEAR(b.lost_buoyancy, 55.234224, 1e-9);
 }
@@ -101,9 +105,7 @@ TEST(FrontRowBalance, ALiftedRowBehindPushesTheFrontRowUp) {
   // The row behind lifted by 5 mm instead: the same bonds, opposite sign.
   const Fixture f = squareGrid();
   const thin_ice::FrontRow row = thin_ice::frontRow(f.model, f.sheet);
-  std::vector<thin_ice::CellPose> poses = atRest(f.model);
-  for (int k : row.rear_cells) poses[k].z += 0.005;
-  const thin_ice::FrontRowBalance b = thin_ice::frontRowBalance(f.model, row, poses);
+  const thin_ice::FrontRowBalance b = liftedBalance(f.model, row, row.rear_cells, 0.005);
   EXPECT_NEAR(b.bond_force, -87046.15, 0.01);
   EXPECT_EQ(b.lost_buoyancy, 0.0);
   EXPECT_NEAR(b.rear_lift, 0.005, 1e-15);
@@ -124,9 +126,7 @@ TEST(FrontRowBalance, TheSameWhicheverCellOfABondIsI) {
   const thin_ice::FrontRow row = thin_ice::frontRow(swapped, f.sheet);
   ASSERT_EQ(row.cut_bonds.size(), 3u);
   for (int b : row.cut_bonds) EXPECT_NEAR(f.sheet.cells[swapped.bond_i[b]].centroid.x, 0.9, 1e-9);
-  std::vector<thin_ice::CellPose> poses = atRest(f.model);
-  for (int k : row.cells) poses[k].z += 0.005;
-  EXPECT_NEAR(thin_ice::frontRowBalance(swapped, row, poses).bond_force, 87046.15, 0.01);
+  EXPECT_NEAR(liftedBalance(swapped, row, row.cells, 0.005).bond_force, 87046.15, 0.01);
 }
 
 TEST(FrontRowBalance, RefusesASnapshotOfAnotherSheet) {

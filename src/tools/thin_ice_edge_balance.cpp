@@ -14,6 +14,7 @@
 
 #include "thin_ice_sim/front_row_balance.hpp"
 #include "thin_ice_sim/run_directory.hpp"
+#include "run_tool_args.hpp"
 
 namespace {
 
@@ -29,31 +30,12 @@ constexpr const char* kTool = "thin_ice_edge_balance";
 
 int main(int argc, char** argv) {
   const char* usage = "usage: thin_ice_edge_balance RUN_DIR [--accept-changed-scenario]\n";
-  std::string run;
-  bool accept_changed = false;
-  for (int a = 1; a < argc; ++a) {
-    const std::string arg = argv[a];
-    if (arg == "-h" || arg == "--help") {
-      std::printf("%s", usage);
-      return 0;
-    }
-    if (arg == "--accept-changed-scenario") {
-      accept_changed = true;
-    } else if (arg.rfind("--", 0) != 0 && run.empty()) {
-      run = arg;
-    } else {
-      std::fprintf(stderr, "%s: unexpected argument '%s'\n%s", kTool, arg.c_str(), usage);
-      return 2;
-    }
-  }
-  if (run.empty()) {
-    std::fprintf(stderr, "%s: one run directory is needed\n%s", kTool, usage);
-    return 2;
-  }
+  thin_ice_tools::RunToolArgs args;
+  const int status = thin_ice_tools::parseRunToolArgs(argc, argv, kTool, usage, {}, args);
+  if (status >= 0) return status;
+  const std::string& run = args.run;
   try {
-    std::string warning;
-    const thin_ice::Scenario scenario = thin_ice::loadRunScenario(run, accept_changed, warning);
-    if (!warning.empty()) std::fprintf(stderr, "%s: warning: %s\n", kTool, warning.c_str());
+    const thin_ice::Scenario scenario = thin_ice_tools::loadRunScenario(args, kTool);
     const std::vector<thin_ice::SnapshotEntry> index = thin_ice::readSnapshotIndex(run);
     const thin_ice::IceSheet sheet = thin_ice::generateIceSheet(scenario.params.sheet);
     const thin_ice::Model model = thin_ice::buildModel(scenario.params, sheet, scenario.source);

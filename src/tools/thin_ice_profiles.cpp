@@ -14,39 +14,21 @@
 #include "thin_ice_sim/rubble_profiles.hpp"
 #include "thin_ice_sim/run_directory.hpp"
 #include "thin_ice_sim/sheet_io.hpp"
+#include "run_tool_args.hpp"
 
 constexpr const char* kTool = "thin_ice_profiles";
 
 int main(int argc, char** argv) {
   const char* usage =
       "usage: thin_ice_profiles RUN_DIR [--snapshot cells_RRRRRR.csv] [--out FILE] [--accept-changed-scenario]\n";
-  std::string run, snapshot, out;
-  bool accept_changed = false;
-  for (int a = 1; a < argc; ++a) {
-    const std::string arg = argv[a];
-    if (arg == "-h" || arg == "--help") {
-      std::printf("%s", usage);
-      return 0;
-    }
-    if (arg == "--accept-changed-scenario") {
-      accept_changed = true;
-    } else if ((arg == "--snapshot" || arg == "--out") && a + 1 < argc) {
-      (arg == "--snapshot" ? snapshot : out) = argv[++a];
-    } else if (arg.rfind("--", 0) != 0 && run.empty()) {
-      run = arg;
-    } else {
-      std::fprintf(stderr, "thin_ice_profiles: unexpected argument '%s'\n%s", arg.c_str(), usage);
-      return 2;
-    }
-  }
-  if (run.empty()) {
-    std::fprintf(stderr, "thin_ice_profiles: a run directory is needed\n%s", usage);
-    return 2;
-  }
+  thin_ice_tools::RunToolArgs args;
+  const int status = thin_ice_tools::parseRunToolArgs(argc, argv, kTool, usage, {"--snapshot", "--out"}, args);
+  if (status >= 0) return status;
+  const std::string& run = args.run;
+  const std::string snapshot = args.values.count("--snapshot") ? args.values.at("--snapshot") : "";
+  const std::string out = args.values.count("--out") ? args.values.at("--out") : "";
   try {
-    std::string warning;
-    const thin_ice::Scenario scenario = thin_ice::loadRunScenario(run, accept_changed, warning);
-    if (!warning.empty()) std::fprintf(stderr, "%s: warning: %s\n", kTool, warning.c_str());
+    const thin_ice::Scenario scenario = thin_ice_tools::loadRunScenario(args, kTool);
     const std::vector<thin_ice::SnapshotEntry> index = thin_ice::readSnapshotIndex(run);
     if (index.empty()) throw std::runtime_error("snapshots/index.csv lists no snapshot");
     const thin_ice::SnapshotEntry* chosen = &index.back();
