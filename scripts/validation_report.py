@@ -59,14 +59,23 @@ def spread_text(values, fmt="{:.0f}"):
     return f"{fmt.format(m)} +- {fmt.format(sd)} ({100 * sd / m:.1f} %)" if m else f"{fmt.format(m)} +- {fmt.format(sd)}"
 
 
-def compare_plot(root, sid, names, histories):
-    """docs/validation/SID/variants.png: F_cal against L of the base run, its seeds and its
-    resolution variants, on one set of axes."""
+def pyplot():
+    """matplotlib.pyplot drawing to files (Agg), or None when matplotlib is missing."""
     try:
         import matplotlib
         matplotlib.use("Agg")
         import matplotlib.pyplot as plt
+        return plt
     except ImportError:
+        return None
+
+
+def compare_plot(root, sid, names, histories):
+    """docs/validation/SID/variants.png: F_cal against L of the base run, its seeds and its
+    resolution variants, on one set of axes."""
+    plt = pyplot()
+    if plt is None:
+        print(f"validation_report: no comparison plot for {sid}: matplotlib is missing")
         return None
     fig, ax = plt.subplots(figsize=(9, 4.5))
     for name in names:
@@ -124,11 +133,8 @@ def profile_plot(root, name, summary):
     if st is None:
         print(f"validation_report: no profile plot for {name}: {why}")
         return None
-    try:
-        import matplotlib
-        matplotlib.use("Agg")
-        import matplotlib.pyplot as plt
-    except ImportError:
+    plt = pyplot()
+    if plt is None:
         print(f"validation_report: no profile plot for {name}: matplotlib is missing")
         return None
     side, top = [], []

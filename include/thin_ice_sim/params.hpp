@@ -3,6 +3,7 @@
 // here only. Scenario files (config/scenarios/*.yaml) set them; scenario.cpp validates them.
 #pragma once
 
+#include <cmath>
 #include <cstdint>
 
 #include "thin_ice_sim/ice_sheet.hpp"
@@ -64,6 +65,12 @@ struct StructureParams {
   double calibration_factor = 0.63; ///< alpha of Eq. (18) [-]
   double friction = 0.1;            ///< ice-structure Coulomb coefficient [-]
 };
+
+/// x [m] of the structure face at height z [m]: it crosses the waterline at toe_x and rises
+/// towards +x at angle_deg from horizontal.
+inline double structureFaceX(const StructureParams& s, double z) {
+  return s.toe_x + z / std::tan(s.angle_deg * 3.14159265358979323846 / 180.0);
+}
 
 /// The pushing plate: a vertical plate across the basin, normal +x.
 struct PusherParams {

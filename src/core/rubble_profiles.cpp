@@ -16,7 +16,7 @@ RubbleProfiles computeRubbleProfiles(const std::vector<CellSnapshot>& cells, con
   const double h = params.ice.thickness;
   const double pile_z = floatingCentroidHeight(h, params.ice.density, params.water.density) + spec.min_lift_thicknesses * h;
   const double x0 = s.toe_x - spec.reach;
-  const double x1 = s.toe_x + s.height / std::tan(s.angle_deg * 3.14159265358979323846 / 180.0);
+  const double x1 = structureFaceX(s, s.height);
   const int nx = std::max(1, static_cast<int>(std::ceil((x1 - x0) / spec.bin)));
   const double y0 = -0.5 * s.width;
   const int ny = std::max(1, static_cast<int>(std::ceil(s.width / spec.bin)));

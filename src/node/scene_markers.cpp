@@ -9,7 +9,6 @@
 namespace thin_ice {
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 constexpr double kRedAbove = 0.3;  ///< [m] top height above the waterline drawn fully red
 
 geometry_msgs::Point point(double x, double y, double z) {
@@ -89,9 +88,8 @@ visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const st
 
   // The structure: the inclined face from the bottom to its top, and the side panels.
   const StructureParams& s = p.structure;
-  const double cot = 1.0 / std::tan(s.angle_deg * kPi / 180.0);
   const double z_low = -p.bottom.depth, z_high = s.height;
-  const double x_low = s.toe_x + z_low * cot, x_high = s.toe_x + z_high * cot;
+  const double x_low = structureFaceX(s, z_low), x_high = structureFaceX(s, z_high);
   const double y0 = -0.5 * s.width, y1 = 0.5 * s.width;
   visualization_msgs::Marker structure = baseMarker(frame, stamp, "structure", visualization_msgs::Marker::TRIANGLE_LIST);
   structure.color = colour(0.55, 0.55, 0.6);
