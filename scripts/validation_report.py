@@ -100,9 +100,20 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def structure_of(summary):
-    """The run's structure section (its scenario file, relative to the repository root as
-    scripts/validate gives it, with the run's structure.* and bottom.depth overrides) and the
-    false bottom's depth; None, with the reason, when the file cannot be read."""
+    """The run's structure geometry (toe_x, angle_deg, width, height) and the false bottom's depth,
+    as summary.json records them; None, with the reason, when they cannot be had."""
+    st = summary.get("structure")
+    if isinstance(st, dict):
+        bottom = summary.get("false_bottom") or {}
+        return {"toe_x": st["toe_x_m"], "angle_deg": st["angle_deg"], "width": st["width_m"],
+                "height": st["height_m"], "bottom_depth": float(bottom.get("depth_m", 0.0))}, None
+    return structure_from_scenario_file(summary)
+
+
+def structure_from_scenario_file(summary):
+    """For runs whose summary.json predates its "structure" section: the scenario file (relative to
+    the repository root as scripts/validate gives it) with the run's structure.* and bottom.depth
+    overrides applied here; None, with the reason, when the file cannot be read."""
     path = summary["scenario"]["file"]
     path = path if os.path.isabs(path) else os.path.join(ROOT, path)
     try:

@@ -402,6 +402,17 @@ std::string summaryJson(const Simulation& sim, const Options& o, const RunResult
     << num(s.steady_std) << ", \"steady_samples\": " << s.steady_samples
     << ",\n    \"steady_rule\": " << jsonString(s.steady_rule) << "\n  }";
   j << ",\n  \"structure_width_m\": " << num(sim.params().structure.width);
+  // The geometry the run used, overrides applied, so that a reader (the validation report's
+  // profile plots) draws the face without re-reading the scenario file.
+  const thin_ice::StructureParams& st = sim.params().structure;
+  j << ",\n  \"structure\": {\"toe_x_m\": " << num(st.toe_x) << ", \"angle_deg\": " << num(st.angle_deg)
+    << ", \"width_m\": " << num(st.width) << ", \"height_m\": " << num(st.height)
+    << ", \"panels\": " << st.panels << "}";
+  j << ",\n  \"false_bottom\": " << (sim.params().bottom.enabled ? "" : "null");
+  if (sim.params().bottom.enabled) {
+    j << "{\"depth_m\": " << num(sim.params().bottom.depth)
+      << ", \"distance_from_structure_m\": " << num(sim.params().bottom.distance_from_structure) << "}";
+  }
   j << ",\n  \"experiment\": " << (experimentFor(sc.name) ? "" : "null");
   if (const Experiment* e = experimentFor(sc.name)) {
     const double k = widthScale(sim), mean = k * e->mean, peak = k * e->peak;
