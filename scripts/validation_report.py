@@ -96,6 +96,90 @@ def compare_plot(root, sid, names, histories):
     return out
 
 
+# Table 6 / Figs. 10-12: the experiments' steady-state mean per ice type [N] (10 m structure).
+EXPERIMENT_MEAN = {"W": 8600.0, "M": 7820.0, "S": 13750.0}
+ICE_TYPE = {"W": "weak", "M": "medium", "S": "strong"}
+WINDOW_M = 0.5  # width of the windows in which the long runs' loads are averaged [m]
+
+
+def window_means(history, width):
+    """Mean F_cal in consecutive windows [k width, (k + 1) width) of pushed length, from L = 0;
+    the last window is kept only when the record covers at least half of it. Returns a list of
+    (begin, end reached, mean)."""
+    out, k = [], 0
+    last = history["lengths"][-1]
+    while k * width < last:
+        begin, end = k * width, (k + 1) * width
+        inside = [f for x, f in zip(history["lengths"], history["loads"]) if begin <= x < end]
+        reached = min(end, last)
+        if inside and reached - begin >= 0.5 * width:
+            out.append((begin, reached, sum(inside) / len(inside)))
+        k += 1
+    return out
+
+
+def long_runs_section(root, runs, histories, rel):
+    """The runs past the matrix's length (named ID-long): their mean load per 0.5 m of pushed
+    length, the weak-above-medium comparison window by window at equal L, and one plot."""
+    names = sorted(n for n in runs if re.fullmatch(r"[WMS]-\d-long", n) and histories.get(n))
+    if not names:
+        return ["## Long runs", "", "None yet (`scripts/validate --series ID --tag long --until-length L`).", ""]
+    means = {n: window_means(histories[n], WINDOW_M) for n in names}
+    count = max(len(m) for m in means.values())
+    header = " | ".join(f"{k * WINDOW_M:.1f}-{(k + 1) * WINDOW_M:.1f} m" for k in range(count))
+    lines = ["## Long runs: mean load per 0.5 m of pushed ice", "",
+             f"Mean F_cal [N] in each {WINDOW_M} m window of pushed length L (a last window is shown when the run "
+             "covers at least half of it, with the length reached in brackets). Experiment: the steady-state mean "
+             "of Table 6, scaled to the run's width.", "",
+             f"| run | L reached [m] | {header} | experiment's steady mean [N] |",
+             "|---|---:|" + "---:|" * count + "---:|"]
+    for n in names:
+        cells = []
+        for k in range(count):
+            w = means[n][k] if k < len(means[n]) else None
+            cells.append("-" if w is None else
+                         f"{w[2]:.0f}" + ("" if w[1] - w[0] > WINDOW_M - 1e-9 else f" (to {w[1]:.2f})"))
+        scale = (runs[n].get("experiment") or {}).get("width_scale", 1.0) or 1.0
+        lines.append(f"| {n} | {runs[n].get('pushed_length_m', 0):.3f} | " + " | ".join(cells) +
+                     f" | {EXPERIMENT_MEAN[n[0]] * scale:.0f} |")
+    lines.append("")
+    # Weak above medium, as the experiment has it: compared window by window at equal L.
+    weak = [n for n in names if n[0] == "W"]
+    medium = [n for n in names if n[0] == "M"]
+    for w in weak:
+        for m in medium:
+            pairs = [(a, b) for a, b in zip(means[w], means[m]) if abs(a[1] - b[1]) < 1e-9 and a[1] - a[0] > WINDOW_M - 1e-9]
+            if not pairs:
+                continue
+            above = sum(1 for a, b in pairs if a[2] > b[2])
+            ratios = ", ".join(f"{a[0]:.1f}-{a[1]:.1f} m: {a[2] / b[2]:.2f}" for a, b in pairs)
+            lines += [f"Weak above medium ({w} against {m}, whole windows at equal L): weak is higher in {above} "
+                      f"of {len(pairs)} windows; ratio weak / medium by window: {ratios}. The experiment's steady "
+                      f"states give {EXPERIMENT_MEAN['W'] / EXPERIMENT_MEAN['M']:.2f}.", ""]
+    plt = pyplot()
+    if plt is not None:
+        fig, ax = plt.subplots(figsize=(10, 4.8))
+        colours = {"W": "#1f77b4", "M": "#ff7f0e", "S": "#2ca02c"}
+        for n in names:
+            h, c = histories[n], colours[n[0]]
+            ax.plot(h["lengths"], h["loads"], color=c, lw=0.5, alpha=0.35)
+            ax.step([a for a, _, _ in means[n]] + [means[n][-1][1]], [v for _, _, v in means[n]] + [means[n][-1][2]],
+                    where="post", color=c, lw=2, label=f"{n}: mean per {WINDOW_M} m")
+            scale = (runs[n].get("experiment") or {}).get("width_scale", 1.0) or 1.0
+            ax.axhline(EXPERIMENT_MEAN[n[0]] * scale, color=c, ls="--", lw=1,
+                       label=f"experiment, {ICE_TYPE[n[0]]} ice: steady mean")
+        ax.set_xlabel("pushed ice length L [m]")
+        ax.set_ylabel("F_cal [N]")
+        ax.set_title("Long runs: F_cal (thin) and its mean per 0.5 m of pushed ice (steps)")
+        ax.grid(alpha=0.3)
+        ax.legend(fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(root, "long_runs.png"), dpi=110)
+        plt.close(fig)
+        lines += [f"![Long runs]({rel}/long_runs.png)", ""]
+    return lines
+
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
@@ -317,6 +401,8 @@ def main():
             if out:
                 plots += [f"![{sid} and its variants]({rel}/{sid}/variants.png)", ""]
     lines += plots
+
+    lines += long_runs_section(a.runs, runs, histories, rel)
 
     # Rubble pile profiles: strong ice first (the paper's Fig. 15), then the longest run of each type.
     pile = []
