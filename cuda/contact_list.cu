@@ -196,6 +196,29 @@ bool DeviceContactList::reserve(size_t pairs) {
   return true;
 }
 
+bool DeviceContactList::seed(const std::vector<int>& i, const std::vector<int>& j,
+                             const std::vector<double>& reference) {
+  const bool moved = reserve(i.size());
+  if (!i.empty()) {
+    TIS_CUDA_CHECK(cudaMemcpy(pair_i_.get(), i.data(), i.size() * sizeof(int), cudaMemcpyHostToDevice));
+    TIS_CUDA_CHECK(cudaMemcpy(pair_j_.get(), j.data(), j.size() * sizeof(int), cudaMemcpyHostToDevice));
+    TIS_CUDA_CHECK(cudaMemcpy(reference_area_.get(), reference.data(), reference.size() * sizeof(double),
+                              cudaMemcpyHostToDevice));
+  }
+  count_ = static_cast<int>(i.size());
+  return moved;
+}
+
+void DeviceContactList::download(std::vector<int>& i, std::vector<int>& j, std::vector<double>& reference) const {
+  i.resize(count_);
+  j.resize(count_);
+  reference.resize(count_);
+  if (count_ == 0) return;
+  TIS_CUDA_CHECK(cudaMemcpy(i.data(), pair_i_.get(), count_ * sizeof(int), cudaMemcpyDeviceToHost));
+  TIS_CUDA_CHECK(cudaMemcpy(j.data(), pair_j_.get(), count_ * sizeof(int), cudaMemcpyDeviceToHost));
+  TIS_CUDA_CHECK(cudaMemcpy(reference.data(), reference_area_.get(), count_ * sizeof(double), cudaMemcpyDeviceToHost));
+}
+
 bool DeviceContactList::rebuild(const CandidateInputs& in, cudaStream_t stream) {
   const int n = cells_;
   const int grid = blocksFor(n);

@@ -9,6 +9,8 @@
 
 #include <cuda_runtime.h>
 
+#include <vector>
+
 #include "device_array.cuh"
 #include "thin_ice_sim/physics/contact.hpp"
 #include "thin_ice_sim/physics/integrate.hpp"
@@ -39,6 +41,12 @@ class DeviceContactList {
   bool rebuild(const CandidateInputs& in, cudaStream_t stream);
   /// Empties the list (reset).
   void clear() { count_ = 0; }
+  /// Makes (i, j, S_ref) the list the next rebuild carries S_ref from (a restored checkpoint);
+  /// the step must not read it before that rebuild (its incidence lists are stale). Returns true
+  /// when the buffers moved.
+  bool seed(const std::vector<int>& i, const std::vector<int>& j, const std::vector<double>& reference);
+  /// The pairs and their S_ref, as the host sees them (a checkpoint).
+  void download(std::vector<int>& i, std::vector<int>& j, std::vector<double>& reference) const;
 
   int count() const { return count_; }
   int capacity() const { return static_cast<int>(pair_i_.size()); }

@@ -288,6 +288,45 @@ class CudaBackend final : public Backend {
     return makeCellSnapshots(model_, motion_.download(), bond_state_.download());
   }
 
+  BackendState saveState() const override {
+    TIS_CUDA_CHECK(cudaStreamSynchronize(stream_));
+    BackendState s;
+    s.time = time_;
+    s.steps = steps_;
+    s.pusher_x = pusher_x_;
+    s.motion = motion_.download();
+    s.bond_state = bond_state_.download();
+    // A bond that broke in the last step taken has applied its last force; the next bondForces
+    // launch would retire it. The state says so now, as the CPU's does.
+    for (unsigned char& b : s.bond_state) {
+      if (b == kBondBreaking) b = kBondBroken;
+    }
+    contacts_.download(s.contact_i, s.contact_j, s.contact_reference);
+    return s;
+  }
+
+  void restoreState(const BackendState& s) override {
+    reset();
+    motion_.upload(s.motion);
+    bond_state_.upload(s.bond_state);
+    time_ = s.time;
+    steps_ = s.steps;
+    pusher_x_ = s.pusher_x;
+    broken_count_ = static_cast<int>(
+        std::count_if(s.bond_state.begin(), s.bond_state.end(), [](unsigned char b) { return b != kBondIntact; }));
+    RunScalars r{};
+    r.pusher_x = pusher_x_;
+    r.broken_total = broken_count_;
+    *run_host_ = r;
+    TIS_CUDA_CHECK(cudaMemcpy(run_.get(), &r, sizeof(RunScalars), cudaMemcpyHostToDevice));
+    // The saved pairs are what the first rebuild (rebuild_requested_ is set) carries S_ref from.
+    if (contacts_.seed(s.contact_i, s.contact_j, s.contact_reference) && graph_exec_ != nullptr) {
+      TIS_CUDA_CHECK(cudaGraphExecDestroy(graph_exec_));
+      graph_exec_ = nullptr;
+    }
+    TIS_CUDA_CHECK(cudaDeviceSynchronize());  // the uploads ran on the legacy stream, the step runs on stream_
+  }
+
  private:
   /// The kernels of one step on stream_ (also what the graph captures).
   void launchStep() {

@@ -11,6 +11,20 @@
 
 namespace thin_ice {
 
+/// What a backend needs to go on where a run stopped (a checkpoint): the cells' motion, every
+/// bond's life and the contact pairs with their reference overlaps S_ref (contact.hpp). Taken
+/// between steps, where no bond is kBondBreaking any more (it applied its last force in the last
+/// step taken), so a state moves between backends unchanged.
+struct BackendState {
+  double time = 0.0;                       ///< [s] simulated, as the backend summed it
+  long steps = 0;
+  double pusher_x = 0.0;                   ///< [m]
+  std::vector<CellMotion> motion;          ///< (cells)
+  std::vector<unsigned char> bond_state;   ///< (bonds) kBondIntact or kBondBroken
+  std::vector<int> contact_i, contact_j;   ///< candidate pairs, sorted by (i, j)
+  std::vector<double> contact_reference;   ///< S_ref of each pair [m^2], -1: not yet touched
+};
+
 class Backend {
  public:
   virtual ~Backend() = default;
@@ -27,6 +41,12 @@ class Backend {
   virtual std::vector<CellSnapshot> cells() const = 0;
   /// Empty while healthy; else what went wrong (non-finite state, runaway speed).
   virtual std::string healthError() const = 0;
+  /// The state between steps, for a checkpoint.
+  virtual BackendState saveState() const = 0;
+  /// Continues from `state` (sizes checked by the caller against the model). The next step
+  /// rebuilds the contact list and carries S_ref over from the pairs of `state`, as any rebuild
+  /// does; loads() is empty until then.
+  virtual void restoreState(const BackendState& state) = 0;
 };
 
 /// Cell snapshots from a backend's state: cell k is in the intact sheet while any of its bonds

@@ -50,6 +50,7 @@ struct CellSnapshot {
 };
 
 class Backend;
+struct BackendState;
 struct Model;
 
 class Simulation {
@@ -103,6 +104,14 @@ class Simulation {
   /// One line on how the backend was chosen (e.g. why `auto` fell back to the CPU).
   const std::string& backendNote() const { return backend_note_; }
 
+  /// The state between steps, for a checkpoint (thin_ice_sim/checkpoint.hpp; the pusher's
+  /// velocity is not in it).
+  BackendState saveState() const;
+  /// Goes on from `state`, saved from this scenario's model on any backend: the next step is the
+  /// one that would have followed it. Throws std::invalid_argument, naming what does not fit the
+  /// model (cell, bond or pair counts, a pair out of range or order, a non-finite cell), and then
+  /// changes nothing. Clears a blow-up; the pusher velocity stays as it is.
+  void restoreState(const BackendState& state);
   /// False after a numerical blow-up (non-finite state or runaway speed); the simulation then
   /// refuses to step until reset() and lastError() says what happened.
   bool healthy() const { return last_error_.empty(); }

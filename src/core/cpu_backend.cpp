@@ -58,6 +58,10 @@ class CpuBackend final : public Backend {
     pusher_x_ = model_.initial_pusher_x;
     health_error_.clear();
     loads_ = LoadSample{};
+    // No S_ref carried into the new run (the CUDA backend clears its list likewise).
+    contact_i_.clear();
+    contact_j_.clear();
+    contact_reference_.clear();
     rebuild_requested_ = true;
   }
 
@@ -105,6 +109,34 @@ class CpuBackend final : public Backend {
 
   std::vector<CellSnapshot> cells() const override {
     return makeCellSnapshots(model_, motion_, bond_state_);
+  }
+
+  BackendState saveState() const override {
+    BackendState s;
+    s.time = time_;
+    s.steps = steps_;
+    s.pusher_x = pusher_x_;
+    s.motion = motion_;
+    s.bond_state = bond_state_;  // kBondBreaking lasts only inside a step on the CPU
+    s.contact_i = contact_i_;
+    s.contact_j = contact_j_;
+    s.contact_reference = contact_reference_;
+    return s;
+  }
+
+  void restoreState(const BackendState& s) override {
+    reset();
+    time_ = s.time;
+    steps_ = s.steps;
+    pusher_x_ = s.pusher_x;
+    motion_ = s.motion;
+    bond_state_ = s.bond_state;
+    broken_count_ = static_cast<int>(
+        std::count_if(bond_state_.begin(), bond_state_.end(), [](unsigned char b) { return b != kBondIntact; }));
+    // The saved pairs are the list the first rebuild carries S_ref from (rebuild_requested_ is set).
+    contact_i_ = s.contact_i;
+    contact_j_ = s.contact_j;
+    contact_reference_ = s.contact_reference;
   }
 
  private:

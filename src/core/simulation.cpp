@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include "cpu_backend.hpp"
 #include "thin_ice_sim/backend.hpp"
@@ -83,6 +84,50 @@ double Simulation::pusherVelocity() const { return pusher_velocity_; }
 void Simulation::reset() {
   backend_->reset();
   pusher_velocity_ = scenario_.params.pusher.velocity;
+  last_error_.clear();
+}
+
+BackendState Simulation::saveState() const { return backend_->saveState(); }
+
+void Simulation::restoreState(const BackendState& state) {
+  const size_t cells = static_cast<size_t>(model_->cell_count), bonds = model_->bond_rest.size();
+  auto refuse = [](const std::string& what) { throw std::invalid_argument("saved state does not fit the model: " + what); };
+  if (state.motion.size() != cells) {
+    refuse(std::to_string(state.motion.size()) + " cells saved, the model has " + std::to_string(cells));
+  }
+  if (state.bond_state.size() != bonds) {
+    refuse(std::to_string(state.bond_state.size()) + " bonds saved, the model has " + std::to_string(bonds));
+  }
+  for (size_t b = 0; b < bonds; ++b) {
+    if (state.bond_state[b] != kBondIntact && state.bond_state[b] != kBondBroken) {
+      refuse("bond " + std::to_string(b) + " has state " + std::to_string(int(state.bond_state[b])) +
+             "; allowed: 0 (intact) or 2 (broken)");
+    }
+  }
+  const size_t pairs = state.contact_i.size();
+  if (state.contact_j.size() != pairs || state.contact_reference.size() != pairs) {
+    refuse("the pair lists differ in length");
+  }
+  for (size_t p = 0; p < pairs; ++p) {
+    const int i = state.contact_i[p], j = state.contact_j[p];
+    if (i < 0 || j <= i || j >= static_cast<int>(cells)) {
+      refuse("pair " + std::to_string(p) + " is (" + std::to_string(i) + ", " + std::to_string(j) +
+             "); allowed: 0 <= i < j < " + std::to_string(cells));
+    }
+    if (p > 0 && (state.contact_i[p - 1] > i || (state.contact_i[p - 1] == i && state.contact_j[p - 1] >= j))) {
+      refuse("pair " + std::to_string(p) + " is out of (i, j) order");
+    }
+  }
+  for (size_t k = 0; k < cells; ++k) {
+    const CellMotion& m = state.motion[k];
+    for (const double v : {m.x, m.y, m.z, m.yaw, m.vx, m.vy, m.vz, m.wz}) {
+      if (!std::isfinite(v)) refuse("cell " + std::to_string(k) + " is not finite");
+    }
+  }
+  if (!(state.time >= 0.0) || state.steps < 0 || !std::isfinite(state.pusher_x)) {
+    refuse("time, step count or pusher position out of range");
+  }
+  backend_->restoreState(state);
   last_error_.clear();
 }
 

@@ -1,0 +1,32 @@
+// Checkpoints: a run's state between steps in one binary file, so that a run stopped (by a
+// signal, a wall-time budget or the end of a machine's loan) goes on later from where it stopped,
+// on either backend, with the same next step it would have taken.
+#pragma once
+
+#include <string>
+
+#include "thin_ice_sim/backend.hpp"
+
+namespace thin_ice {
+
+struct Checkpoint {
+  std::string scenario_hash;     ///< Scenario::hash of the run's scenario (file text + overrides)
+  double pusher_velocity = 0.0;  ///< [m/s] commanded at the time of the checkpoint
+  BackendState state;
+};
+
+Checkpoint takeCheckpoint(const Simulation& sim);
+
+/// Puts `checkpoint` into `sim` (Simulation::restoreState's checks); throws std::invalid_argument
+/// when its scenario hash is not sim's, naming both, and changes nothing then.
+void restoreCheckpoint(Simulation& sim, const Checkpoint& checkpoint);
+
+/// Native-endian binary, written through a temporary file and a rename (a crash leaves the old
+/// file); throws std::runtime_error naming the path when it cannot be written.
+void writeCheckpoint(const std::string& path, const Checkpoint& checkpoint);
+
+/// Throws std::runtime_error naming the path and what is wrong: not a checkpoint, another format
+/// version or byte order, truncated, or bytes left over.
+Checkpoint readCheckpoint(const std::string& path);
+
+}  // namespace thin_ice

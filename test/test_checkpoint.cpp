@@ -1,0 +1,240 @@
+// Checkpoints: a run split at a checkpoint written to a file and read back goes on bit for bit
+// as the run that was never stopped (on each backend), and bad files or states that do not fit
+// are refused with the reason, changing nothing.
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "thin_ice_sim/backend.hpp"
+#include "thin_ice_sim/built_backends.hpp"
+#include "thin_ice_sim/checkpoint.hpp"
+#include "thin_ice_sim/scenario.hpp"
+#include "thin_ice_sim/simulation.hpp"
+
+namespace thin_ice {
+namespace {
+
+const std::string kQuick = std::string(THIN_ICE_SOURCE_DIR) + "/config/scenarios/quick.yaml";
+
+/// quick.yaml cut to a 1 m strip 0.1 m from the structure: it meets the face after ~0.27 s.
+Scenario strip(const std::string& length = "1.0") {
+  return loadScenario(kQuick, {"sheet.length=" + length, "structure.toe_x=1.1", "bottom.distance_from_structure=0.5"});
+}
+
+const bool kBackendsRegistered = (registerBuiltBackends(), true);
+
+std::string gpuMissing() {
+  const GpuBackendProvider* gpu = gpuBackendProvider();
+  return gpu == nullptr ? "this build has no CUDA backend" : gpu->unavailable_reason();
+}
+
+std::string temporaryPath(const std::string& name) {
+  return ::testing::TempDir() + "/thin_ice_checkpoint_" + name;
+}
+
+std::string fileBytes(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>());
+}
+
+void writeBytes(const std::string& path, const std::string& bytes) {
+  std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+class EveryBackend : public ::testing::TestWithParam<BackendKind> {
+ protected:
+  void SetUp() override {
+    ASSERT_TRUE(kBackendsRegistered);
+    if (GetParam() == BackendKind::kCuda && !gpuMissing().empty()) GTEST_SKIP() << "no GPU run: " << gpuMissing();
+  }
+};
+
+INSTANTIATE_TEST_SUITE_P(Backends, EveryBackend, ::testing::Values(BackendKind::kCpu, BackendKind::kCuda),
+                         [](const ::testing::TestParamInfo<BackendKind>& info) {
+                           return std::string(info.param == BackendKind::kCpu ? "cpu" : "cuda");
+                         });
+
+void expectSameRun(const Simulation& a, const Simulation& b) {
+  ASSERT_EQ(a.stepCount(), b.stepCount());
+  EXPECT_EQ(a.time(), b.time());
+  EXPECT_EQ(a.pusherPosition(), b.pusherPosition());
+  const LoadSample la = a.loads(), lb = b.loads();
+  EXPECT_EQ(la.horizontal_raw, lb.horizontal_raw);
+  EXPECT_EQ(la.vertical_raw, lb.vertical_raw);
+  EXPECT_EQ(la.pusher_force, lb.pusher_force);
+  EXPECT_EQ(la.broken_bonds, lb.broken_bonds);
+  EXPECT_EQ(la.contacts, lb.contacts);
+  const std::vector<CellSnapshot> ca = a.cells(), cb = b.cells();
+  ASSERT_EQ(ca.size(), cb.size());
+  for (size_t k = 0; k < ca.size(); ++k) {
+    ASSERT_EQ(ca[k].x, cb[k].x) << "cell " << k;
+    ASSERT_EQ(ca[k].y, cb[k].y) << "cell " << k;
+    ASSERT_EQ(ca[k].z, cb[k].z) << "cell " << k;
+    ASSERT_EQ(ca[k].yaw, cb[k].yaw) << "cell " << k;
+    ASSERT_EQ(ca[k].vx, cb[k].vx) << "cell " << k;
+    ASSERT_EQ(ca[k].vz, cb[k].vz) << "cell " << k;
+    ASSERT_EQ(ca[k].wz, cb[k].wz) << "cell " << k;
+  }
+}
+
+TEST_P(EveryBackend, ARunSplitAtACheckpointFileGoesOnBitForBit) {
+  // Stopped at 0.45 s, with the sheet against the face, 16 bonds broken and pairs in contact, so
+  // that S_ref, the bond states and the pusher all have to come back.
+  Simulation straight(strip(), GetParam());
+  Simulation first_half(strip(), GetParam());
+  straight.advance(0.45);
+  first_half.advance(0.45);
+  ASSERT_TRUE(first_half.healthy()) << first_half.lastError();
+  ASSERT_GT(first_half.loads().broken_bonds, 0);
+  ASSERT_GT(first_half.loads().contacts, 0);
+  ASSERT_GT(first_half.loads().horizontal_raw, 0.0);
+  const std::string path = temporaryPath("split.bin");
+  writeCheckpoint(path, takeCheckpoint(first_half));
+
+  Simulation second_half(strip(), GetParam());
+  restoreCheckpoint(second_half, readCheckpoint(path));
+  EXPECT_EQ(second_half.time(), first_half.time());
+  EXPECT_EQ(second_half.pushedLength(), first_half.pushedLength());
+  straight.advance(0.20);
+  second_half.advance(0.20);
+  ASSERT_TRUE(second_half.healthy()) << second_half.lastError();
+  EXPECT_GT(second_half.loads().broken_bonds, first_half.loads().broken_bonds);  // 22 against 16
+  expectSameRun(straight, second_half);
+  std::remove(path.c_str());
+}
+
+TEST(Checkpoint, ACpuCheckpointGoesOnOnTheGpu) {
+  if (!gpuMissing().empty()) GTEST_SKIP() << "no GPU run: " << gpuMissing();
+  Simulation cpu(strip(), BackendKind::kCpu);
+  cpu.advance(0.45);
+  Simulation gpu(strip(), BackendKind::kCuda);
+  restoreCheckpoint(gpu, takeCheckpoint(cpu));
+  cpu.step(50);
+  gpu.step(50);
+  ASSERT_TRUE(gpu.healthy()) << gpu.lastError();
+  EXPECT_EQ(gpu.stepCount(), cpu.stepCount());
+  // The backends agree to rounding, not bit for bit (fused multiply-adds): 50 steps on, every
+  // cell is where the CPU has it to 1e-9 m, as test_cuda_backend asks of a run from rest.
+  const std::vector<CellSnapshot> a = cpu.cells(), b = gpu.cells();
+  for (size_t k = 0; k < a.size(); ++k) {
+    ASSERT_NEAR(a[k].x, b[k].x, 1e-9) << "cell " << k;
+    ASSERT_NEAR(a[k].y, b[k].y, 1e-9) << "cell " << k;
+    ASSERT_NEAR(a[k].z, b[k].z, 1e-9) << "cell " << k;
+  }
+}
+
+TEST(Checkpoint, TheFileHoldsEveryFieldAsItWas) {
+  Checkpoint c;
+  c.scenario_hash = "0123456789abcdef";
+  c.pusher_velocity = 0.05;
+  c.state.time = 1.25;
+  c.state.steps = 50000;
+  c.state.pusher_x = 2.0625;
+  c.state.motion = {{1.0, 2.0, -0.02, 0.1, 0.5, -0.25, 0.125, 3.0}, {4.0, 5.0, 0.0, -0.1, 0.0, 0.0, 0.0, 0.0}};
+  c.state.bond_state = {kBondIntact, kBondBroken, kBondIntact};
+  c.state.contact_i = {0};
+  c.state.contact_j = {1};
+  c.state.contact_reference = {-1.0};
+  const std::string path = temporaryPath("fields.bin");
+  writeCheckpoint(path, c);
+  const Checkpoint r = readCheckpoint(path);
+  EXPECT_EQ(r.scenario_hash, c.scenario_hash);
+  EXPECT_EQ(r.pusher_velocity, 0.05);
+  EXPECT_EQ(r.state.time, 1.25);
+  EXPECT_EQ(r.state.steps, 50000);
+  EXPECT_EQ(r.state.pusher_x, 2.0625);
+  ASSERT_EQ(r.state.motion.size(), 2u);
+  EXPECT_EQ(r.state.motion[0].z, -0.02);
+  EXPECT_EQ(r.state.motion[0].wz, 3.0);
+  EXPECT_EQ(r.state.motion[1].yaw, -0.1);
+  EXPECT_EQ(r.state.bond_state, c.state.bond_state);
+  EXPECT_EQ(r.state.contact_i, c.state.contact_i);
+  EXPECT_EQ(r.state.contact_j, c.state.contact_j);
+  EXPECT_EQ(r.state.contact_reference, c.state.contact_reference);
+  // magic 8, mark 4, hash 4 + 16, four scalars 4 x 8, cells 8 + 2 x 64, bonds 8 + 3,
+  // one pair 8 + 4 + 4 + 8, end 8 bytes
+  EXPECT_EQ(fileBytes(path).size(), 8u + 4 + 20 + 32 + 136 + 11 + 24 + 8);
+  std::remove(path.c_str());
+}
+
+/// readCheckpoint(path of `bytes`) must throw a runtime_error whose message holds `part`.
+void expectUnreadable(const std::string& bytes, const std::string& part) {
+  const std::string path = temporaryPath("bad.bin");
+  writeBytes(path, bytes);
+  try {
+    readCheckpoint(path);
+    ADD_FAILURE() << "read a bad file; expected: " << part;
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(part), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(path), std::string::npos) << e.what();
+  }
+  std::remove(path.c_str());
+}
+
+TEST(Checkpoint, BadFilesAreRefusedWithTheReason) {
+  Simulation sim(strip(), BackendKind::kCpu);
+  sim.advance(0.01);
+  const std::string path = temporaryPath("good.bin");
+  writeCheckpoint(path, takeCheckpoint(sim));
+  const std::string good = fileBytes(path);
+  std::remove(path.c_str());
+  expectUnreadable("", "truncated");
+  expectUnreadable("cell,x_m,y_m\n0,1,2\n", "header");
+  expectUnreadable(good.substr(0, good.size() / 2), "truncated");
+  expectUnreadable(good.substr(0, good.size() - 3), "truncated");
+  expectUnreadable(good + "x", "1 bytes after the end mark");
+  std::string swapped = good;
+  std::swap(swapped[8], swapped[11]);  // the byte-order mark as the other order writes it
+  expectUnreadable(swapped, "byte order");
+  std::string huge = good;
+  // The cell count sits after magic, mark, hash (4 + 16), velocity, time, steps and pusher x.
+  const size_t cell_count_at = 8 + 4 + 4 + sim.scenario().hash.size() + 4 * 8;
+  huge[cell_count_at + 6] = 0x7f;  // ~1e17 cells: refused before any allocation
+  expectUnreadable(huge, "truncated in cells");
+  expectUnreadable(std::string(8, 'x') + good.substr(8), "header");
+}
+
+TEST(Checkpoint, AStateThatDoesNotFitTheModelIsRefusedAndChangesNothing) {
+  Simulation small(strip("1.0"), BackendKind::kCpu), other(strip("0.9"), BackendKind::kCpu);
+  small.advance(0.02);
+  other.advance(0.01);
+  const double before = other.time();
+  try {
+    restoreCheckpoint(other, takeCheckpoint(small));
+    ADD_FAILURE() << "restored another scenario's checkpoint";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("scenario hash"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(other.time(), before);
+
+  const double small_time = small.time();
+  BackendState state = small.saveState();
+  state.motion.pop_back();
+  try {
+    small.restoreState(state);
+    ADD_FAILURE() << "restored a state with another cell count";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("cells saved"), std::string::npos) << e.what();
+  }
+  state = small.saveState();
+  ASSERT_GE(state.contact_i.size(), 2u);
+  std::swap(state.contact_i[0], state.contact_i[1]);
+  std::swap(state.contact_j[0], state.contact_j[1]);
+  EXPECT_THROW(small.restoreState(state), std::invalid_argument);
+  state = small.saveState();
+  state.bond_state[0] = 7;
+  EXPECT_THROW(small.restoreState(state), std::invalid_argument);
+  state = small.saveState();
+  state.motion[3].vz = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_THROW(small.restoreState(state), std::invalid_argument);
+  EXPECT_EQ(small.time(), small_time);  // every refusal left the run where it was
+}
+
+}  // namespace
+}  // namespace thin_ice
