@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """thin_ice_run stopped by SIGTERM keeps what it reached: exit status 4, loads.csv with the rows so
 far (no loads.csv.partial left), summary.json with status "interrupted" and the pushed length
-reached, and a last snapshot of that state.
+reached, a last snapshot of that state and a checkpoint to resume from.
 
     test_run_interrupt.py THIN_ICE_RUN SOURCE_DIR
 """
@@ -52,6 +52,8 @@ def main():
             failures.append(f"last row at t = {rows[-1]['time_s']} s, summary at {summary['simulated_time_s']} s")
         if not 0.0 < summary["simulated_time_s"] < 1000.0:
             failures.append(f"simulated_time_s {summary['simulated_time_s']}, expected between 0 and the target")
+        if not os.path.exists(os.path.join(out, "checkpoint.bin")):
+            failures.append("no checkpoint.bin to resume from")
         index = list(csv.DictReader(open(os.path.join(out, "snapshots", "index.csv"))))
         if not index or abs(float(index[-1]["time_s"]) - summary["simulated_time_s"]) > 1e-9:
             failures.append("no snapshot of the state reached")

@@ -28,6 +28,16 @@ double csvNumber(const CsvRow& row, const std::string& column, const std::string
 /// which the caller has checked); `warning` then says so.
 Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, std::string& warning);
 
+/// What a resumed run takes over from RUN/summary.json.
+struct RunSummary {
+  std::string status;              ///< "completed", "interrupted" or "unhealthy"
+  double output_interval = 0.0;    ///< [s] between rows of loads.csv
+  double wall_time = 0.0;          ///< [s] of stepping and output, every segment so far
+  std::vector<double> resumed_at;  ///< [m] pushed lengths at which the run was resumed before
+};
+/// Throws std::runtime_error naming the file when it is missing or lacks one of these.
+RunSummary readRunSummary(const std::string& run_dir);
+
 /// One entry of RUN/snapshots/index.csv.
 struct SnapshotEntry {
   std::string file;   ///< path of the cells CSV

@@ -75,6 +75,24 @@ Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, s
   return scenario;
 }
 
+RunSummary readRunSummary(const std::string& run_dir) {
+  const std::string path = run_dir + "/summary.json";
+  if (!std::ifstream(path)) throw std::runtime_error("no " + path + ": not a thin_ice_run output directory");
+  try {
+    const YAML::Node summary = YAML::LoadFile(path);  // JSON is YAML
+    RunSummary r;
+    r.status = summary["status"].as<std::string>();
+    r.output_interval = summary["output_interval_s"].as<double>();
+    r.wall_time = summary["wall_time_s"].as<double>();
+    if (summary["resumed_at_m"]) {
+      for (const YAML::Node& l : summary["resumed_at_m"]) r.resumed_at.push_back(l.as<double>());
+    }
+    return r;
+  } catch (const YAML::Exception& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+}
+
 std::vector<SnapshotEntry> readSnapshotIndex(const std::string& run_dir) {
   const std::string index_path = run_dir + "/snapshots/index.csv";
   if (!std::ifstream(index_path)) throw std::runtime_error("no snapshots/index.csv: the run needs --snapshots N");

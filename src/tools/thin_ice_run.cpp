@@ -2,10 +2,18 @@
 // statistics (Section 5.1, Table 6) and optional cell snapshots.
 //   thin_ice_run --scenario FILE [--set section.key=value]... (--until-length L | --until-time T)
 //                [--backend cpu|cuda|auto] [--output-interval S] [--snapshots N] --out DIR
-// Writes DIR/loads.csv (one row per output interval, through loads.csv.partial), DIR/summary.json
-// and with --snapshots DIR/snapshots/cells_RRRRRR.csv (RRRRRR: loads.csv data row, 1-based; 000000:
-// the sheet at rest) listed in snapshots/index.csv; with --profiles DIR/profiles.csv (the rubble
-// pile's side and top profiles at the end).
+//   thin_ice_run --resume DIR [--accept-changed-scenario] (--until-length L | --until-time T)
+//                [--backend cpu|cuda|auto] [--snapshots N] [--profiles]
+// Writes DIR/loads.csv (one row per output interval, through loads.csv.partial), DIR/summary.json,
+// DIR/checkpoint.bin (the state at the end, unless the run became unhealthy) and with --snapshots
+// DIR/snapshots/cells_RRRRRR.csv (RRRRRR: loads.csv data row, 1-based; 000000: the sheet at rest)
+// listed in snapshots/index.csv; with --profiles DIR/profiles.csv (the rubble pile's side and top
+// profiles at the end).
+// --resume goes on from DIR/checkpoint.bin with DIR's scenario and output interval to the new
+// target (the whole run's L or T), on any backend: the rows are appended to DIR/loads.csv (the old
+// file stays whole until the new one is complete), the statistics cover the whole history, and
+// the summary's wall time is the sum of the segments. --snapshots N then spreads N snapshots over
+// the new segment, the last at its end.
 // Exit status: 0 done; 1 I/O or backend failure; 2 bad arguments or scenario (nothing written);
 // 3 the simulation became unhealthy (rows up to then and the summary are kept); 4 stopped by
 // SIGINT or SIGTERM before the target: the output interval in progress is finished, and its rows,
@@ -25,6 +33,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -33,8 +42,10 @@
 #include <vector>
 
 #include "thin_ice_sim/built_backends.hpp"
+#include "thin_ice_sim/checkpoint.hpp"
 #include "thin_ice_sim/load_statistics.hpp"
 #include "thin_ice_sim/rubble_profiles.hpp"
+#include "thin_ice_sim/run_directory.hpp"
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/sheet_io.hpp"
 #include "thin_ice_sim/simulation.hpp"
@@ -49,7 +60,9 @@ const char* kUsage =
     "usage: thin_ice_run --scenario FILE [--set section.key=value]... "
     "(--until-length L | --until-time T)\n"
     "                    [--backend cpu|cuda|auto] [--output-interval S] [--snapshots N] [--profiles]\n"
-    "                    --out DIR\n";
+    "                    --out DIR\n"
+    "       thin_ice_run --resume DIR [--accept-changed-scenario] (--until-length L | --until-time T)\n"
+    "                    [--backend cpu|cuda|auto] [--snapshots N] [--profiles]\n";
 
 struct UsageError : std::runtime_error {  // bad command line: exit status 2 with the usage
   using std::runtime_error::runtime_error;
@@ -57,11 +70,13 @@ struct UsageError : std::runtime_error {  // bad command line: exit status 2 wit
 
 struct Options {
   std::string scenario, out;
+  std::string resume;                  // the run directory to go on with (then also `out`)
+  bool accept_changed_scenario = false;  // --resume with a scenario file whose comments changed
   std::vector<std::string> overrides;  // "section.key=value", applied in order
   double until_length = 0.0;           // [m] pushed length to reach (0: not given)
   double until_time = 0.0;             // [s] simulated time to reach (0: not given)
   thin_ice::BackendKind backend = thin_ice::BackendKind::kAuto;
-  double output_interval = 0.01;       // [s] simulated time between rows of loads.csv
+  double output_interval = 0.0;        // [s] simulated time between rows of loads.csv (0: not given)
   int snapshots = 0;                   // cell snapshots, evenly spaced in progress
   bool profiles = false;               // write the rubble pile's side and top profiles at the end
   bool help = false;
@@ -96,15 +111,21 @@ Options parseOptions(int argc, char** argv) {
       o.profiles = true;
       continue;
     }
+    if (flag == "--accept-changed-scenario") {
+      o.accept_changed_scenario = true;
+      continue;
+    }
     static const std::set<std::string> kFlags = {"--scenario", "--set", "--until-length",
-        "--until-time", "--backend", "--out", "--output-interval", "--snapshots"};
+        "--until-time", "--backend", "--out", "--output-interval", "--snapshots", "--resume"};
     if (!kFlags.count(flag)) {
       throw UsageError("unknown argument '" + flag + "'; allowed: --scenario --set --until-length "
-                       "--until-time --backend --output-interval --snapshots --profiles --out");
+                       "--until-time --backend --output-interval --snapshots --profiles --out --resume "
+                       "--accept-changed-scenario");
     }
     if (k + 1 >= argc) throw UsageError(flag + " needs a value");
     const std::string value = argv[++k];
     if (flag == "--scenario") o.scenario = value;
+    if (flag == "--resume") o.resume = value;
     if (flag == "--out") o.out = value;
     if (flag == "--until-length") o.until_length = parseNumber(flag, value, "a length > 0 [m]");
     if (flag == "--until-time") o.until_time = parseNumber(flag, value, "a time > 0 [s]");
@@ -123,8 +144,19 @@ Options parseOptions(int argc, char** argv) {
       o.snapshots = static_cast<int>(count);
     }
   }
-  if (o.scenario.empty()) throw UsageError("--scenario FILE is required");
-  if (o.out.empty()) throw UsageError("--out DIR is required");
+  if (!o.resume.empty()) {
+    // The run directory holds the scenario, its overrides and the output interval.
+    if (!o.scenario.empty() || !o.overrides.empty() || !o.out.empty() || o.output_interval > 0.0) {
+      throw UsageError("--resume DIR takes the scenario, --set, --output-interval and --out of the run in DIR; "
+                       "give none of them");
+    }
+    o.out = o.resume;
+  } else {
+    if (o.accept_changed_scenario) throw UsageError("--accept-changed-scenario goes with --resume DIR only");
+    if (o.scenario.empty()) throw UsageError("--scenario FILE is required");
+    if (o.out.empty()) throw UsageError("--out DIR is required");
+    if (!(o.output_interval > 0.0)) o.output_interval = 0.01;
+  }
   if ((o.until_length > 0.0) == (o.until_time > 0.0)) {
     throw UsageError("give exactly one of --until-length L [m] or --until-time T [s]");
   }
@@ -230,13 +262,18 @@ std::string formatDuration(double seconds) {
 /// A single updating line on a terminal (every 0.5 s wall); one plain line per 10 % otherwise.
 class Progress {
  public:
-  Progress() : tty_(::isatty(STDERR_FILENO) != 0) {}
+  /// start_time [s] and start_fraction: where this segment of the run began (0, 0 unless resumed).
+  Progress(double start_time, double start_fraction)
+      : tty_(::isatty(STDERR_FILENO) != 0), start_time_(start_time), start_fraction_(start_fraction) {
+    while (next_tenth_ - 1e-3 <= start_fraction) next_tenth_ += 0.1;
+  }
   void report(double fraction, const LoadSample& s, double wall, bool last) {
     // 1e-3: rows whose time falls a rounding short of a tenth still print it
     const bool due = last || (tty_ ? wall - last_print_ >= 0.5 : fraction >= next_tenth_ - 1e-3);
     if (!due) return;
-    const double rtf = wall > 0.0 ? s.time / wall : 0.0;
-    const double eta = fraction > 0.0 ? wall * (1.0 - fraction) / fraction : NAN;
+    const double rtf = wall > 0.0 ? (s.time - start_time_) / wall : 0.0;
+    const double done = fraction - start_fraction_;
+    const double eta = done > 0.0 ? wall * (1.0 - fraction) / done : NAN;
     std::fprintf(stderr, "%s%3.0f%%  t %.2f s  L %.3f m  F_cal %.0f N  %.3gx real time  ETA %s%s",
                  tty_ ? "\r" : "", 100.0 * fraction, s.time, s.pushed_length,
                  s.horizontal_calibrated, rtf, formatDuration(eta).c_str(),
@@ -247,8 +284,21 @@ class Progress {
 
  private:
   bool tty_;
+  double start_time_, start_fraction_;
   double last_print_ = -1.0;   // [s] wall
   double next_tenth_ = 0.1;    // fraction at which the next plain line is due
+};
+
+/// What a resumed run takes over from its directory (inactive for a fresh run).
+struct Continuation {
+  bool active = false;
+  std::string previous_csv;           ///< loads.csv as it was, header included
+  long rows = 0;                      ///< its data rows
+  std::vector<double> length, load;   ///< its history [m], [N] calibrated
+  LoadSample last;                    ///< its last row (time, length, bond counts)
+  double previous_wall = 0.0;         ///< [s] of the segments before
+  std::vector<double> resumed_at;     ///< [m] where each resumption began, this one last
+  double start_fraction = 0.0;        ///< progress towards the target at the resumption
 };
 
 struct RunResult {
@@ -270,8 +320,11 @@ extern "C" void requestStop(int signal_number) {
   std::signal(signal_number, SIG_DFL);  // a second signal ends the process at once
 }
 
-RunResult runSimulation(Simulation& sim, const Options& o) {
+RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& cont) {
   RunResult r;
+  r.length = cont.length;
+  r.load = cont.load;
+  r.last = cont.last;
   const double dt = sim.timeStep(), velocity = sim.pusherVelocity();
   const long steps_per_row = std::max(1L, std::lround(o.output_interval / dt));
   const bool by_length = o.until_length > 0.0;
@@ -288,13 +341,19 @@ RunResult runSimulation(Simulation& sim, const Options& o) {
   std::ofstream csv(csv_path + ".partial", std::ios::trunc);
   if (!csv) throw std::runtime_error("cannot write '" + csv_path + ".partial'");
   const std::string snapshot_dir = o.out + "/snapshots";
-  if (o.snapshots > 0) std::ofstream(snapshot_dir + "/index.csv") << "file,time_s,pushed_length_m\n";
+  const std::string snapshot_index = snapshot_dir + "/index.csv";
+  if (o.snapshots > 0 && !(cont.active && std::filesystem::exists(snapshot_index))) {
+    std::ofstream(snapshot_index) << "file,time_s,pushed_length_m\n";
+  }
   // Snapshot k (0-based) is due at progress k / (N - 1): the first shows the sheet at rest, the
-  // last the end (N = 1: the end only). Several due in one row give one file.
+  // last the end (N = 1: the end only). Several due in one row give one file. A resumed run's
+  // snapshots are due at k / N of its own segment, k = 1..N: its start is the last run's end.
   int snapshots_taken = 0;
   auto snapshotDue = [&](double f, bool last) {
+    const double segment = (f - cont.start_fraction) / std::max(1e-12, 1.0 - cont.start_fraction);
     const int due = last ? o.snapshots
-                         : o.snapshots == 1 ? 0 : int(std::floor(f * (o.snapshots - 1) + 1e-9)) + 1;
+                    : cont.active ? int(std::floor(segment * o.snapshots + 1e-9))
+                    : o.snapshots == 1 ? 0 : int(std::floor(f * (o.snapshots - 1) + 1e-9)) + 1;
     if (std::min(due, o.snapshots) <= snapshots_taken) return false;
     snapshots_taken = std::min(due, o.snapshots);
     return true;
@@ -303,11 +362,15 @@ RunResult runSimulation(Simulation& sim, const Options& o) {
   // Row r (1-based) holds the loads averaged over output interval r (Simulation::loads()),
   // stamped with the time at its end; there is no row at t = 0 (nothing averaged yet).
   const std::size_t panels = static_cast<std::size_t>(std::max(0, sim.params().structure.panels));
-  csv << loadsHeader(panels);
-  if (snapshotDue(0.0, false)) writeSnapshot(sim, snapshot_dir, 0);  // the sheet at rest
-  Progress progress;
+  if (cont.active) {
+    csv << cont.previous_csv;
+  } else {
+    csv << loadsHeader(panels);
+    if (snapshotDue(0.0, false)) writeSnapshot(sim, snapshot_dir, 0);  // the sheet at rest
+  }
+  Progress progress(sim.time(), cont.start_fraction);
   const Clock::time_point start = Clock::now();
-  for (long row = 1, left = stepsLeft(); left > 0; ++row) {
+  for (long row = cont.rows + 1, left = stepsLeft(); left > 0; ++row) {
     const double pushed_before = sim.pushedLength();
     try {
       sim.step(std::min(steps_per_row, left));
@@ -360,8 +423,9 @@ void writeProfiles(const Simulation& sim, const std::string& path) {
   thin_ice::writeFileAtomically(path, thin_ice::rubbleProfilesCsv(thin_ice::computeRubbleProfiles(sim.cells(), sim.params())));
 }
 
-std::string summaryJson(const Simulation& sim, const Options& o, const RunResult& r,
+std::string summaryJson(const Simulation& sim, const Options& o, const RunResult& r, const Continuation& cont,
                         const thin_ice::LoadStatistics& s, double setup_wall) {
+  const double wall = cont.previous_wall + r.wall;  // [s] of every segment
   const thin_ice::Scenario& sc = sim.scenario();
   const LoadSample& last = r.last;  // after a blow-up sim.loads() is not to be trusted
   const double cell_steps = double(sim.cellCount()) * double(sim.stepCount());
@@ -386,9 +450,12 @@ std::string summaryJson(const Simulation& sim, const Options& o, const RunResult
     << num(o.until_length > 0.0 ? o.until_length : o.until_time) << "}"
     << ",\n  \"steps\": " << sim.stepCount() << ", \"simulated_time_s\": " << num(sim.time())
     << ", \"pushed_length_m\": " << num(sim.pushedLength())
-    << ",\n  \"setup_wall_time_s\": " << num(setup_wall) << ", \"wall_time_s\": " << num(r.wall)
-    << ",\n  \"cell_steps_per_second\": " << num(r.wall > 0.0 ? cell_steps / r.wall : NAN)
-    << ", \"real_time_factor\": " << num(r.wall > 0.0 ? sim.time() / r.wall : NAN)
+    << ",\n  \"setup_wall_time_s\": " << num(setup_wall) << ", \"wall_time_s\": " << num(wall)
+    << ",\n  \"cell_steps_per_second\": " << num(wall > 0.0 ? cell_steps / wall : NAN)
+    << ", \"real_time_factor\": " << num(wall > 0.0 ? sim.time() / wall : NAN);
+  j << ",\n  \"resumed_at_m\": [";
+  for (std::size_t k = 0; k < cont.resumed_at.size(); ++k) j << (k ? ", " : "") << num(cont.resumed_at[k]);
+  j << "]"
     << ",\n  \"intact_bonds\": " << last.intact_bonds << ", \"broken_bonds\": " << last.broken_bonds
     << ",\n  \"calibration_factor\": " << num(sc.params.structure.calibration_factor)
     << ",\n  \"load\": {\n    \"quantity\": \"horizontal_calibrated_N against pushed_length_m\""
@@ -439,10 +506,91 @@ void printReport(const Simulation& sim, const Options& o, const thin_ice::LoadSt
   std::printf("wrote %s/loads.csv and %s/summary.json\n", o.out.c_str(), o.out.c_str());
 }
 
-/// Loads the scenario and builds the simulation; creates nothing on disk.
-std::unique_ptr<Simulation> prepare(const Options& o) {
-  const thin_ice::Scenario scenario = thin_ice::loadScenario(o.scenario, o.overrides);
-  auto sim = std::make_unique<Simulation>(scenario, o.backend);
+/// A run directory that cannot be resumed: exit status 2, nothing written.
+struct ResumeError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+/// --resume: the run's scenario and output interval, its checkpoint put into a new simulation, and
+/// its loads.csv read back, checked against each other. Creates nothing on disk.
+std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
+  const std::string& dir = o.resume;
+  try {
+    const thin_ice::RunSummary summary = thin_ice::readRunSummary(dir);
+    if (summary.status == "unhealthy") {
+      throw ResumeError(dir + " ended unhealthy (summary.json); its state is not worth going on from");
+    }
+    std::string warning;
+    const thin_ice::Scenario scenario = thin_ice::loadRunScenario(dir, o.accept_changed_scenario, warning);
+    if (!warning.empty()) std::fprintf(stderr, "thin_ice_run: warning: %s\n", warning.c_str());
+    const std::string checkpoint_path = dir + "/checkpoint.bin";
+    if (!std::filesystem::exists(checkpoint_path)) {
+      throw ResumeError(dir + " has no checkpoint.bin (thin_ice_run writes one at the end of every healthy run "
+                        "since 2026-12-01)");
+    }
+    const thin_ice::Checkpoint checkpoint = thin_ice::readCheckpoint(checkpoint_path);
+    auto sim = std::make_unique<Simulation>(scenario, o.backend);
+    if (o.accept_changed_scenario) {  // the file's hash changed with it, and the checkpoint has the old one
+      sim->restoreState(checkpoint.state);
+      sim->setPusherVelocity(checkpoint.pusher_velocity);
+    } else {
+      thin_ice::restoreCheckpoint(*sim, checkpoint);
+    }
+    o.output_interval = summary.output_interval;
+
+    // The history so far, which must end where the checkpoint is.
+    const std::string csv_path = dir + "/loads.csv";
+    std::ifstream csv(csv_path);
+    if (!csv) throw ResumeError("no " + csv_path);
+    cont.previous_csv.assign(std::istreambuf_iterator<char>(csv), std::istreambuf_iterator<char>());
+    const std::size_t panels = static_cast<std::size_t>(std::max(0, sim->params().structure.panels));
+    if (cont.previous_csv.compare(0, loadsHeader(panels).size(), loadsHeader(panels)) != 0) {
+      throw ResumeError(csv_path + ": its header is not thin_ice_run's for " + std::to_string(panels) + " panels");
+    }
+    for (const thin_ice::CsvRow& row : thin_ice::readCsv(csv_path)) {
+      cont.length.push_back(thin_ice::csvNumber(row, "pushed_length_m", csv_path));
+      cont.load.push_back(thin_ice::csvNumber(row, "horizontal_calibrated_N", csv_path));
+      cont.last.time = thin_ice::csvNumber(row, "time_s", csv_path);
+      cont.last.pushed_length = cont.length.back();
+      cont.last.intact_bonds = static_cast<int>(thin_ice::csvNumber(row, "intact_bonds", csv_path));
+      cont.last.broken_bonds = static_cast<int>(thin_ice::csvNumber(row, "broken_bonds", csv_path));
+    }
+    cont.rows = static_cast<long>(cont.length.size());
+    // Rows hold nine significant digits.
+    if (cont.rows == 0 || std::fabs(cont.last.time - sim->time()) > 1e-8 * std::max(1.0, sim->time())) {
+      throw ResumeError(csv_path + " ends at t = " + (cont.rows ? jsonNumber(cont.last.time) : std::string("(no rows)")) +
+                        " s but checkpoint.bin is at t = " + jsonNumber(sim->time()) + " s");
+    }
+    cont.active = true;
+    cont.previous_wall = summary.wall_time;
+    cont.resumed_at = summary.resumed_at;
+    cont.resumed_at.push_back(sim->pushedLength());
+    const double reached = o.until_length > 0.0 ? sim->pushedLength() : sim->time();
+    const double target = o.until_length > 0.0 ? o.until_length : o.until_time;
+    if (!(target > reached + 1e-9)) {
+      throw ResumeError(dir + " is already at " + (o.until_length > 0.0 ? "L = " : "t = ") + jsonNumber(reached) +
+                        (o.until_length > 0.0 ? " m" : " s") + "; give a target beyond it");
+    }
+    cont.start_fraction = reached / target;
+    return sim;
+  } catch (const ResumeError&) {
+    throw;
+  } catch (const thin_ice::ScenarioError&) {
+    throw;
+  } catch (const std::exception& e) {  // unreadable files, a checkpoint that does not fit
+    throw ResumeError(dir + ": cannot resume: " + e.what());
+  }
+}
+
+/// Loads the scenario and builds the simulation (or takes over a run to resume); creates nothing
+/// on disk.
+std::unique_ptr<Simulation> prepare(Options& o, Continuation& cont) {
+  std::unique_ptr<Simulation> sim;
+  if (!o.resume.empty()) {
+    sim = prepareResume(o, cont);
+  } else {
+    sim = std::make_unique<Simulation>(thin_ice::loadScenario(o.scenario, o.overrides), o.backend);
+  }
   if (o.until_length > 0.0 && !(sim->pusherVelocity() > 0.0)) {
     throw UsageError("--until-length needs pusher.velocity > 0 m/s; the scenario has " +
                      jsonNumber(sim->pusherVelocity()) + " m/s (use --until-time)");
@@ -456,13 +604,17 @@ int main(int argc, char** argv) {
   thin_ice::registerBuiltBackends();
   const Clock::time_point setup_start = Clock::now();
   Options options;
+  Continuation continuation;
   std::unique_ptr<Simulation> sim;
   try {
     options = parseOptions(argc, argv);
     if (options.help) return std::printf("%s", kUsage) < 0;
-    sim = prepare(options);
+    sim = prepare(options, continuation);
   } catch (const UsageError& e) {
     std::cerr << "thin_ice_run: " << e.what() << "\n" << kUsage;
+    return 2;
+  } catch (const ResumeError& e) {
+    std::cerr << "thin_ice_run: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {  // ScenarioError: 2; e.g. no CUDA device: 1
     std::cerr << "thin_ice_run: " << e.what() << "\n";
@@ -473,10 +625,18 @@ int main(int argc, char** argv) {
     std::filesystem::create_directories(options.out + (options.snapshots > 0 ? "/snapshots" : ""));
     std::signal(SIGINT, requestStop);
     std::signal(SIGTERM, requestStop);
-    const RunResult result = runSimulation(*sim, options);
+    const RunResult result = runSimulation(*sim, options, continuation);
     const auto stats = thin_ice::analyseLoadHistory(result.length, result.load);
+    // The checkpoint first: a summary that says "completed" or "interrupted" has one beside it
+    // that matches its loads.csv. An unhealthy state is not worth going on from.
+    const std::string checkpoint_path = options.out + "/checkpoint.bin";
+    if (result.error.empty()) {
+      thin_ice::writeCheckpoint(checkpoint_path, thin_ice::takeCheckpoint(*sim));
+    } else {
+      std::filesystem::remove(checkpoint_path);
+    }
     thin_ice::writeFileAtomically(options.out + "/summary.json",
-                                  summaryJson(*sim, options, result, stats, setup_wall));
+                                  summaryJson(*sim, options, result, continuation, stats, setup_wall));
     if (options.profiles) writeProfiles(*sim, options.out + "/profiles.csv");
     printReport(*sim, options, stats);
     return !result.error.empty() ? 3 : result.interrupted_by != 0 ? 4 : 0;
