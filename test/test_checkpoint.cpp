@@ -16,22 +16,19 @@
 #include "thin_ice_sim/checkpoint.hpp"
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/simulation.hpp"
+#include "every_backend.hpp"
 
 namespace thin_ice {
 namespace {
+
+using test::EveryBackend;
+using test::gpuMissing;
 
 const std::string kQuick = std::string(THIN_ICE_SOURCE_DIR) + "/config/scenarios/quick.yaml";
 
 /// quick.yaml cut to a 1 m strip 0.1 m from the structure: it meets the face after ~0.27 s.
 Scenario strip(const std::string& length = "1.0") {
   return loadScenario(kQuick, {"sheet.length=" + length, "structure.toe_x=1.1", "bottom.distance_from_structure=0.5"});
-}
-
-const bool kBackendsRegistered = (registerBuiltBackends(), true);
-
-std::string gpuMissing() {
-  const GpuBackendProvider* gpu = gpuBackendProvider();
-  return gpu == nullptr ? "this build has no CUDA backend" : gpu->unavailable_reason();
 }
 
 std::string temporaryPath(const std::string& name) {
@@ -47,18 +44,7 @@ void writeBytes(const std::string& path, const std::string& bytes) {
   std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
 }
 
-class EveryBackend : public ::testing::TestWithParam<BackendKind> {
- protected:
-  void SetUp() override {
-    ASSERT_TRUE(kBackendsRegistered);
-    if (GetParam() == BackendKind::kCuda && !gpuMissing().empty()) GTEST_SKIP() << "no GPU run: " << gpuMissing();
-  }
-};
-
-INSTANTIATE_TEST_SUITE_P(Backends, EveryBackend, ::testing::Values(BackendKind::kCpu, BackendKind::kCuda),
-                         [](const ::testing::TestParamInfo<BackendKind>& info) {
-                           return std::string(info.param == BackendKind::kCpu ? "cpu" : "cuda");
-                         });
+THIN_ICE_EVERY_BACKEND();
 
 void expectSameRun(const Simulation& a, const Simulation& b) {
   ASSERT_EQ(a.stepCount(), b.stepCount());

@@ -12,9 +12,13 @@
 #include "thin_ice_sim/model.hpp"
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/simulation.hpp"
+#include "every_backend.hpp"
 
 namespace thin_ice {
 namespace {
+
+using test::EveryBackend;
+using test::gpuMissing;
 
 const std::string kQuick = std::string(THIN_ICE_SOURCE_DIR) + "/config/scenarios/quick.yaml";
 
@@ -24,27 +28,7 @@ Scenario shortStrip(int threads) {
                                "numerics.threads=" + std::to_string(threads)});
 }
 
-const bool kBackendsRegistered = (registerBuiltBackends(), true);
-
-/// Why the GPU cannot run here ("" when it can).
-std::string gpuMissing() {
-  const GpuBackendProvider* gpu = gpuBackendProvider();
-  return gpu == nullptr ? "this build has no CUDA backend" : gpu->unavailable_reason();
-}
-
-/// Each test body runs once per backend.
-class EveryBackend : public ::testing::TestWithParam<BackendKind> {
- protected:
-  void SetUp() override {
-    ASSERT_TRUE(kBackendsRegistered);
-    if (GetParam() == BackendKind::kCuda && !gpuMissing().empty()) GTEST_SKIP() << "no GPU run: " << gpuMissing();
-  }
-};
-
-INSTANTIATE_TEST_SUITE_P(Backends, EveryBackend, ::testing::Values(BackendKind::kCpu, BackendKind::kCuda),
-                         [](const ::testing::TestParamInfo<BackendKind>& info) {
-                           return std::string(info.param == BackendKind::kCpu ? "cpu" : "cuda");
-                         });
+THIN_ICE_EVERY_BACKEND();
 
 TEST_P(EveryBackend, SheetMeetsTheStructureBreaksBondsAndLoadsIt) {
   Simulation sim(shortStrip(0), GetParam());
