@@ -104,16 +104,16 @@ WINDOW_M = 0.5  # width of the windows in which the long runs' loads are average
 
 def window_means(history, width):
     """Mean F_cal in consecutive windows [k width, (k + 1) width) of pushed length, from L = 0;
-    the last window is kept only when the record covers at least half of it. Returns a list of
-    (begin, end reached, mean)."""
-    out, k = [], 0
+    the last window is kept only when the record covers at least half of it. Returns a dict
+    k -> (begin, end reached, mean); a window without samples is left out."""
+    out, k = {}, 0
     last = history["lengths"][-1]
     while k * width < last:
         begin, end = k * width, (k + 1) * width
         inside = [f for x, f in zip(history["lengths"], history["loads"]) if begin <= x < end]
         reached = min(end, last)
         if inside and reached - begin >= 0.5 * width:
-            out.append((begin, reached, sum(inside) / len(inside)))
+            out[k] = (begin, reached, sum(inside) / len(inside))
         k += 1
     return out
 
@@ -121,11 +121,12 @@ def window_means(history, width):
 def long_runs_section(root, runs, histories, rel):
     """The runs past the matrix's length (named ID-long): their mean load per 0.5 m of pushed
     length, the weak-above-medium comparison window by window at equal L, and one plot."""
-    names = sorted(n for n in runs if re.fullmatch(r"[WMS]-\d-long", n) and histories.get(n))
+    names = sorted(n for n in runs if re.fullmatch(r"[WMS]-\d-long", n) and histories.get(n)
+                   and window_means(histories[n], WINDOW_M))
     if not names:
         return ["## Long runs", "", "None yet (`scripts/validate --series ID --tag long --until-length L`).", ""]
     means = {n: window_means(histories[n], WINDOW_M) for n in names}
-    count = max(len(m) for m in means.values())
+    count = max(max(m) for m in means.values()) + 1
     header = " | ".join(f"{k * WINDOW_M:.1f}-{(k + 1) * WINDOW_M:.1f} m" for k in range(count))
     lines = ["## Long runs: mean load per 0.5 m of pushed ice", "",
              f"Mean F_cal [N] in each {WINDOW_M} m window of pushed length L (a last window is shown when the run "
@@ -136,7 +137,7 @@ def long_runs_section(root, runs, histories, rel):
     for n in names:
         cells = []
         for k in range(count):
-            w = means[n][k] if k < len(means[n]) else None
+            w = means[n].get(k)
             cells.append("-" if w is None else
                          f"{w[2]:.0f}" + ("" if w[1] - w[0] > WINDOW_M - 1e-9 else f" (to {w[1]:.2f})"))
         scale = (runs[n].get("experiment") or {}).get("width_scale", 1.0) or 1.0
@@ -148,7 +149,9 @@ def long_runs_section(root, runs, histories, rel):
     medium = [n for n in names if n[0] == "M"]
     for w in weak:
         for m in medium:
-            pairs = [(a, b) for a, b in zip(means[w], means[m]) if abs(a[1] - b[1]) < 1e-9 and a[1] - a[0] > WINDOW_M - 1e-9]
+            pairs = [(means[w][k], means[m][k]) for k in sorted(set(means[w]) & set(means[m]))
+                     if means[w][k][1] - means[w][k][0] > WINDOW_M - 1e-9
+                     and means[m][k][1] - means[m][k][0] > WINDOW_M - 1e-9 and means[m][k][2] != 0.0]
             if not pairs:
                 continue
             above = sum(1 for a, b in pairs if a[2] > b[2])
@@ -163,7 +166,8 @@ def long_runs_section(root, runs, histories, rel):
         for n in names:
             h, c = histories[n], colours[n[0]]
             ax.plot(h["lengths"], h["loads"], color=c, lw=0.5, alpha=0.35)
-            ax.step([a for a, _, _ in means[n]] + [means[n][-1][1]], [v for _, _, v in means[n]] + [means[n][-1][2]],
+            windows = [means[n][k] for k in sorted(means[n])]
+            ax.step([a for a, _, _ in windows] + [windows[-1][1]], [v for _, _, v in windows] + [windows[-1][2]],
                     where="post", color=c, lw=2, label=f"{n}: mean per {WINDOW_M} m")
             scale = (runs[n].get("experiment") or {}).get("width_scale", 1.0) or 1.0
             ax.axhline(EXPERIMENT_MEAN[n[0]] * scale, color=c, ls="--", lw=1,
@@ -187,7 +191,7 @@ def structure_of(summary):
     """The run's structure geometry (toe_x, angle_deg, width, height) and the false bottom's depth,
     as summary.json records them; None, with the reason, when they cannot be had."""
     st = summary.get("structure")
-    if isinstance(st, dict):
+    if isinstance(st, dict) and all(k in st for k in ("toe_x_m", "angle_deg", "width_m", "height_m")):
         bottom = summary.get("false_bottom") or {}
         return {"toe_x": st["toe_x_m"], "angle_deg": st["angle_deg"], "width": st["width_m"],
                 "height": st["height_m"], "bottom_depth": float(bottom.get("depth_m", 0.0))}, None

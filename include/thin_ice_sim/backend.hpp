@@ -22,8 +22,15 @@ struct BackendState {
   std::vector<CellMotion> motion;          ///< (cells)
   std::vector<unsigned char> bond_state;   ///< (bonds) kBondIntact or kBondBroken
   std::vector<int> contact_i, contact_j;   ///< candidate pairs, sorted by (i, j)
-  std::vector<double> contact_reference;   ///< S_ref of each pair [m^2], -1: not yet touched
+  std::vector<double> contact_reference;   ///< S_ref of each pair [m^2], -1: new to the list
 };
+// Not saved: the positions at the last contact rebuild and the steps since it (Algorithm 1's
+// rebuild test). A restored state is rebuilt at its first step instead; that cannot change the
+// forces: a pair within reach of touching before the next rebuild is in any rebuild's list
+// (the search margin covers two cells each moving and turning as far as a rebuild allows,
+// model.cpp), a pair that stays keeps its S_ref,
+// and a pair that leaves held S_ref = 0 (not touching), which is what a new pair gets on its
+// first step without contact. test_checkpoint checks the result bit for bit.
 
 class Backend {
  public:

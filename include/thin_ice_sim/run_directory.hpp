@@ -33,6 +33,7 @@ struct RunSummary {
   std::string status;              ///< "completed", "interrupted" or "unhealthy"
   double output_interval = 0.0;    ///< [s] between rows of loads.csv
   double wall_time = 0.0;          ///< [s] of stepping and output, every segment so far
+  long steps = 0;                  ///< time steps taken by the end of the run
   std::vector<double> resumed_at;  ///< [m] pushed lengths at which the run was resumed before
 };
 /// Throws std::runtime_error naming the file when it is missing or lacks one of these.

@@ -109,8 +109,8 @@ class Simulation {
   BackendState saveState() const;
   /// Goes on from `state`, saved from this scenario's model on any backend: the next step is the
   /// one that would have followed it. Throws std::invalid_argument, naming what does not fit the
-  /// model (cell, bond or pair counts, a pair out of range or order, a non-finite cell), and then
-  /// changes nothing. Clears a blow-up; the pusher velocity stays as it is.
+  /// model (cell or bond counts, pair lists of unequal length, a pair out of range or order, a bad
+  /// S_ref, a non-finite value), and then changes nothing. Clears a blow-up; the pusher velocity stays as it is.
   void restoreState(const BackendState& state);
   /// False after a numerical blow-up (non-finite state or runaway speed); the simulation then
   /// refuses to step until reset() and lastError() says what happened.

@@ -6,6 +6,7 @@
 //   u64 pairs,  i32 i x pairs, i32 j x pairs, f64 S_ref x pairs | "TICKEND\0"
 #include "thin_ice_sim/checkpoint.hpp"
 
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <fstream>
@@ -94,6 +95,10 @@ void restoreCheckpoint(Simulation& sim, const Checkpoint& checkpoint) {
   if (checkpoint.scenario_hash != sim.scenario().hash) {
     throw std::invalid_argument("checkpoint is of scenario hash " + checkpoint.scenario_hash + ", this run's is " +
                                 sim.scenario().hash + " (the scenario file or its overrides changed)");
+  }
+  if (!std::isfinite(checkpoint.pusher_velocity)) {
+    throw std::invalid_argument("checkpoint's pusher velocity is " + std::to_string(checkpoint.pusher_velocity) +
+                                " m/s; allowed: finite");
   }
   sim.restoreState(checkpoint.state);
   sim.setPusherVelocity(checkpoint.pusher_velocity);

@@ -78,19 +78,33 @@ Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, s
 RunSummary readRunSummary(const std::string& run_dir) {
   const std::string path = run_dir + "/summary.json";
   if (!std::ifstream(path)) throw std::runtime_error("no " + path + ": not a thin_ice_run output directory");
+  YAML::Node summary;
   try {
-    const YAML::Node summary = YAML::LoadFile(path);  // JSON is YAML
-    RunSummary r;
-    r.status = summary["status"].as<std::string>();
-    r.output_interval = summary["output_interval_s"].as<double>();
-    r.wall_time = summary["wall_time_s"].as<double>();
-    if (summary["resumed_at_m"]) {
-      for (const YAML::Node& l : summary["resumed_at_m"]) r.resumed_at.push_back(l.as<double>());
-    }
-    return r;
+    summary = YAML::LoadFile(path);  // JSON is YAML
   } catch (const YAML::Exception& e) {
     throw std::runtime_error(path + ": " + e.what());
   }
+  auto field = [&](const char* key, const char* allowed) {
+    const YAML::Node node = summary[key];
+    if (!node) throw std::runtime_error(path + ": no \"" + key + "\" (" + allowed + ")");
+    return node;
+  };
+  auto number = [&](const char* key, auto kind, const char* allowed) {
+    try {
+      return field(key, allowed).template as<decltype(kind)>();
+    } catch (const YAML::Exception&) {
+      throw std::runtime_error(path + ": \"" + key + "\" is " + YAML::Dump(summary[key]) + "; allowed: " + allowed);
+    }
+  };
+  RunSummary r;
+  r.status = number("status", std::string(), "completed, interrupted or unhealthy");
+  r.output_interval = number("output_interval_s", 0.0, "a time [s]");
+  r.wall_time = number("wall_time_s", 0.0, "a time [s]");
+  r.steps = number("steps", 0L, "a whole number of steps");
+  if (summary["resumed_at_m"]) {
+    for (const YAML::Node& l : summary["resumed_at_m"]) r.resumed_at.push_back(l.as<double>());
+  }
+  return r;
 }
 
 std::vector<SnapshotEntry> readSnapshotIndex(const std::string& run_dir) {

@@ -106,7 +106,8 @@ void Simulation::restoreState(const BackendState& state) {
   }
   const size_t pairs = state.contact_i.size();
   if (state.contact_j.size() != pairs || state.contact_reference.size() != pairs) {
-    refuse("the pair lists differ in length");
+    refuse("the pair lists differ in length (i: " + std::to_string(pairs) + ", j: " + std::to_string(state.contact_j.size()) +
+           ", S_ref: " + std::to_string(state.contact_reference.size()) + ")");
   }
   for (size_t p = 0; p < pairs; ++p) {
     const int i = state.contact_i[p], j = state.contact_j[p];
@@ -115,18 +116,28 @@ void Simulation::restoreState(const BackendState& state) {
              "); allowed: 0 <= i < j < " + std::to_string(cells));
     }
     if (p > 0 && (state.contact_i[p - 1] > i || (state.contact_i[p - 1] == i && state.contact_j[p - 1] >= j))) {
-      refuse("pair " + std::to_string(p) + " is out of (i, j) order");
+      refuse("pair " + std::to_string(p) + " (" + std::to_string(i) + ", " + std::to_string(j) + ") does not come after (" +
+             std::to_string(state.contact_i[p - 1]) + ", " + std::to_string(state.contact_j[p - 1]) +
+             "); allowed: pairs sorted by (i, j), each once");
+    }
+    const double reference = state.contact_reference[p];
+    if (!(reference >= 0.0 || reference == -1.0) || !std::isfinite(reference)) {
+      refuse("pair " + std::to_string(p) + " has S_ref " + std::to_string(reference) + " m^2; allowed: -1 or a finite value >= 0");
     }
   }
   for (size_t k = 0; k < cells; ++k) {
     const CellMotion& m = state.motion[k];
-    for (const double v : {m.x, m.y, m.z, m.yaw, m.vx, m.vy, m.vz, m.wz}) {
-      if (!std::isfinite(v)) refuse("cell " + std::to_string(k) + " is not finite");
+    const double values[] = {m.x, m.y, m.z, m.yaw, m.vx, m.vy, m.vz, m.wz};
+    const char* names[] = {"x", "y", "z", "yaw", "vx", "vy", "vz", "wz"};
+    for (int v = 0; v < 8; ++v) {
+      if (!std::isfinite(values[v])) refuse("cell " + std::to_string(k) + " has " + names[v] + " = " + std::to_string(values[v]));
     }
   }
-  if (!(state.time >= 0.0) || state.steps < 0 || !std::isfinite(state.pusher_x)) {
-    refuse("time, step count or pusher position out of range");
+  if (!(state.time >= 0.0) || !std::isfinite(state.time)) {
+    refuse("time " + std::to_string(state.time) + " s; allowed: finite and >= 0");
   }
+  if (state.steps < 0) refuse("step count " + std::to_string(state.steps) + "; allowed: >= 0");
+  if (!std::isfinite(state.pusher_x)) refuse("pusher position " + std::to_string(state.pusher_x) + " m; allowed: finite");
   backend_->restoreState(state);
   last_error_.clear();
 }

@@ -14,8 +14,10 @@
 // file stays whole until the new one is complete), the statistics cover the whole history, and
 // the summary's wall time is the sum of the segments. --snapshots N then spreads N snapshots over
 // the new segment, the last at its end.
-// Exit status: 0 done; 1 I/O or backend failure; 2 bad arguments or scenario (nothing written);
-// 3 the simulation became unhealthy (rows up to then and the summary are kept); 4 stopped by
+// Exit status: 0 done; 1 I/O or backend failure; 2 bad arguments or scenario, or a run directory
+// that cannot be resumed (nothing written); 3 the simulation became unhealthy (rows up to then and
+// the summary are kept; a resumed run is left as it was and the segment's rows go to
+// DIR/unhealthy_segment.csv); 4 stopped by
 // SIGINT or SIGTERM before the target: the output interval in progress is finished, and its rows,
 // the summary (status "interrupted"), the profiles and a last snapshot are written as at the
 // target (a second signal kills at once).
@@ -372,8 +374,12 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
   const Clock::time_point start = Clock::now();
   for (long row = cont.rows + 1, left = stepsLeft(); left > 0; ++row) {
     const double pushed_before = sim.pushedLength();
+    // Rows end on multiples of steps_per_row counted from t = 0, so that a run resumed after a
+    // short last row (a target between rows) writes the same rows from there on as a run made in
+    // one go; in a fresh run every row but the last is whole.
+    const long to_boundary = steps_per_row - sim.stepCount() % steps_per_row;
     try {
-      sim.step(std::min(steps_per_row, left));
+      sim.step(std::min(to_boundary, left));
     } catch (const std::exception& e) {
       r.error = std::string("step failed: ") + e.what();
     }
@@ -404,8 +410,10 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
   }
   r.wall = std::chrono::duration<double>(Clock::now() - start).count();
   csv.close();
-  if (!csv || std::rename((csv_path + ".partial").c_str(), csv_path.c_str()) != 0) {
-    throw std::runtime_error("cannot finish '" + csv_path + "'");
+  // A resumed segment that went wrong leaves the run as it was: its rows go to a file of their own.
+  const std::string kept = cont.active && !r.error.empty() ? o.out + "/unhealthy_segment.csv" : csv_path;
+  if (!csv || std::rename((csv_path + ".partial").c_str(), kept.c_str()) != 0) {
+    throw std::runtime_error("cannot finish '" + kept + "'");
   }
   return r;
 }
@@ -511,25 +519,49 @@ struct ResumeError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// Runs `read` and turns what goes wrong into a ResumeError naming the directory (exit status 2).
+template <typename Read>
+auto aboutTheDirectory(const std::string& dir, Read read) -> decltype(read()) {
+  try {
+    return read();
+  } catch (const ResumeError&) {
+    throw;
+  } catch (const thin_ice::ScenarioError&) {
+    throw;
+  } catch (const std::exception& e) {  // unreadable files, a checkpoint that does not fit
+    throw ResumeError(dir + ": cannot resume: " + e.what());
+  }
+}
+
 /// --resume: the run's scenario and output interval, its checkpoint put into a new simulation, and
-/// its loads.csv read back, checked against each other. Creates nothing on disk.
+/// its loads.csv read back, checked against each other. Creates nothing on disk. What is wrong
+/// with the directory is a ResumeError; a backend that cannot start fails as for a fresh run.
 std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
   const std::string& dir = o.resume;
-  try {
-    const thin_ice::RunSummary summary = thin_ice::readRunSummary(dir);
+  thin_ice::RunSummary summary;
+  thin_ice::Checkpoint checkpoint;
+  const thin_ice::Scenario scenario = aboutTheDirectory(dir, [&] {
+    summary = thin_ice::readRunSummary(dir);
     if (summary.status == "unhealthy") {
       throw ResumeError(dir + " ended unhealthy (summary.json); its state is not worth going on from");
     }
     std::string warning;
-    const thin_ice::Scenario scenario = thin_ice::loadRunScenario(dir, o.accept_changed_scenario, warning);
+    thin_ice::Scenario loaded = thin_ice::loadRunScenario(dir, o.accept_changed_scenario, warning);
     if (!warning.empty()) std::fprintf(stderr, "thin_ice_run: warning: %s\n", warning.c_str());
     const std::string checkpoint_path = dir + "/checkpoint.bin";
     if (!std::filesystem::exists(checkpoint_path)) {
       throw ResumeError(dir + " has no checkpoint.bin (thin_ice_run writes one at the end of every healthy run "
                         "since 2026-12-01)");
     }
-    const thin_ice::Checkpoint checkpoint = thin_ice::readCheckpoint(checkpoint_path);
-    auto sim = std::make_unique<Simulation>(scenario, o.backend);
+    checkpoint = thin_ice::readCheckpoint(checkpoint_path);
+    if (checkpoint.state.steps != summary.steps) {
+      throw ResumeError(checkpoint_path + " is at step " + std::to_string(checkpoint.state.steps) +
+                        " but summary.json says the run ended at step " + std::to_string(summary.steps));
+    }
+    return loaded;
+  });
+  auto sim = std::make_unique<Simulation>(scenario, o.backend);  // no device: exit status 1
+  aboutTheDirectory(dir, [&] {
     if (o.accept_changed_scenario) {  // the file's hash changed with it, and the checkpoint has the old one
       sim->restoreState(checkpoint.state);
       sim->setPusherVelocity(checkpoint.pusher_velocity);
@@ -544,9 +576,12 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
     if (!csv) throw ResumeError("no " + csv_path);
     cont.previous_csv.assign(std::istreambuf_iterator<char>(csv), std::istreambuf_iterator<char>());
     const std::size_t panels = static_cast<std::size_t>(std::max(0, sim->params().structure.panels));
-    if (cont.previous_csv.compare(0, loadsHeader(panels).size(), loadsHeader(panels)) != 0) {
-      throw ResumeError(csv_path + ": its header is not thin_ice_run's for " + std::to_string(panels) + " panels");
+    const std::string header = loadsHeader(panels);
+    if (cont.previous_csv.compare(0, header.size(), header) != 0) {
+      throw ResumeError(csv_path + ": its first line is not thin_ice_run's header for " + std::to_string(panels) +
+                        " panels (" + header.substr(0, header.size() - 1) + ")");
     }
+    if (cont.previous_csv.back() != '\n') throw ResumeError(csv_path + ": its last row is cut short (no line end)");
     for (const thin_ice::CsvRow& row : thin_ice::readCsv(csv_path)) {
       cont.length.push_back(thin_ice::csvNumber(row, "pushed_length_m", csv_path));
       cont.load.push_back(thin_ice::csvNumber(row, "horizontal_calibrated_N", csv_path));
@@ -556,30 +591,24 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
       cont.last.broken_bonds = static_cast<int>(thin_ice::csvNumber(row, "broken_bonds", csv_path));
     }
     cont.rows = static_cast<long>(cont.length.size());
-    // Rows hold nine significant digits.
+    // Rows hold nine significant digits; the step count above is the exact check.
     if (cont.rows == 0 || std::fabs(cont.last.time - sim->time()) > 1e-8 * std::max(1.0, sim->time())) {
       throw ResumeError(csv_path + " ends at t = " + (cont.rows ? jsonNumber(cont.last.time) : std::string("(no rows)")) +
                         " s but checkpoint.bin is at t = " + jsonNumber(sim->time()) + " s");
     }
-    cont.active = true;
-    cont.previous_wall = summary.wall_time;
-    cont.resumed_at = summary.resumed_at;
-    cont.resumed_at.push_back(sim->pushedLength());
     const double reached = o.until_length > 0.0 ? sim->pushedLength() : sim->time();
     const double target = o.until_length > 0.0 ? o.until_length : o.until_time;
     if (!(target > reached + 1e-9)) {
       throw ResumeError(dir + " is already at " + (o.until_length > 0.0 ? "L = " : "t = ") + jsonNumber(reached) +
                         (o.until_length > 0.0 ? " m" : " s") + "; give a target beyond it");
     }
+    cont.active = true;
+    cont.previous_wall = summary.wall_time;
+    cont.resumed_at = summary.resumed_at;
+    cont.resumed_at.push_back(sim->pushedLength());
     cont.start_fraction = reached / target;
-    return sim;
-  } catch (const ResumeError&) {
-    throw;
-  } catch (const thin_ice::ScenarioError&) {
-    throw;
-  } catch (const std::exception& e) {  // unreadable files, a checkpoint that does not fit
-    throw ResumeError(dir + ": cannot resume: " + e.what());
-  }
+  });
+  return sim;
 }
 
 /// Loads the scenario and builds the simulation (or takes over a run to resume); creates nothing
@@ -626,6 +655,11 @@ int main(int argc, char** argv) {
     std::signal(SIGINT, requestStop);
     std::signal(SIGTERM, requestStop);
     const RunResult result = runSimulation(*sim, options, continuation);
+    if (continuation.active && !result.error.empty()) {
+      std::fprintf(stderr, "thin_ice_run: the resumed segment became unhealthy; %s is left as it was (its rows are in "
+                   "unhealthy_segment.csv there)\n", options.out.c_str());
+      return 3;
+    }
     const auto stats = thin_ice::analyseLoadHistory(result.length, result.load);
     // The checkpoint first: a summary that says "completed" or "interrupted" has one beside it
     // that matches its loads.csv. An unhealthy state is not worth going on from.
