@@ -312,8 +312,7 @@ class CudaBackend final : public Backend {
     time_ = s.time;
     steps_ = s.steps;
     pusher_x_ = s.pusher_x;
-    broken_count_ = static_cast<int>(
-        std::count_if(s.bond_state.begin(), s.bond_state.end(), [](unsigned char b) { return b != kBondIntact; }));
+    broken_count_ = countBrokenBonds(s.bond_state);
     RunScalars r{};
     r.pusher_x = pusher_x_;
     r.broken_total = broken_count_;

@@ -32,6 +32,13 @@ struct BackendState {
 // and a pair that leaves held S_ref = 0 (not touching), which is what a new pair gets on its
 // first step without contact. test_checkpoint checks the result bit for bit.
 
+/// Bonds in any state but kBondIntact: the broken-bond count a restored backend starts from.
+inline int countBrokenBonds(const std::vector<unsigned char>& bond_state) {
+  int broken = 0;
+  for (const unsigned char b : bond_state) broken += b != kBondIntact ? 1 : 0;
+  return broken;
+}
+
 class Backend {
  public:
   virtual ~Backend() = default;

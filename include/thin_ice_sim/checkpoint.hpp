@@ -17,9 +17,11 @@ struct Checkpoint {
 
 Checkpoint takeCheckpoint(const Simulation& sim);
 
-/// Puts `checkpoint` into `sim` (Simulation::restoreState's checks); throws std::invalid_argument
-/// when its scenario hash is not sim's, naming both, and changes nothing then.
-void restoreCheckpoint(Simulation& sim, const Checkpoint& checkpoint);
+/// Puts `checkpoint` into `sim` (Simulation::restoreState's checks, and a finite pusher velocity);
+/// throws std::invalid_argument when its scenario hash is not sim's, naming both, unless
+/// accept_changed_scenario (a scenario file whose comments alone changed since the checkpoint, as
+/// the caller has been told), and changes nothing then.
+void restoreCheckpoint(Simulation& sim, const Checkpoint& checkpoint, bool accept_changed_scenario = false);
 
 /// Native-endian binary, written through a temporary file and a rename (a crash leaves the old
 /// file); throws std::runtime_error naming the path when it cannot be written.

@@ -91,8 +91,8 @@ Checkpoint takeCheckpoint(const Simulation& sim) {
   return {sim.scenario().hash, sim.pusherVelocity(), sim.saveState()};
 }
 
-void restoreCheckpoint(Simulation& sim, const Checkpoint& checkpoint) {
-  if (checkpoint.scenario_hash != sim.scenario().hash) {
+void restoreCheckpoint(Simulation& sim, const Checkpoint& checkpoint, bool accept_changed_scenario) {
+  if (!accept_changed_scenario && checkpoint.scenario_hash != sim.scenario().hash) {
     throw std::invalid_argument("checkpoint is of scenario hash " + checkpoint.scenario_hash + ", this run's is " +
                                 sim.scenario().hash + " (the scenario file or its overrides changed)");
   }

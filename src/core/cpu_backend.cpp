@@ -131,8 +131,7 @@ class CpuBackend final : public Backend {
     pusher_x_ = s.pusher_x;
     motion_ = s.motion;
     bond_state_ = s.bond_state;
-    broken_count_ = static_cast<int>(
-        std::count_if(bond_state_.begin(), bond_state_.end(), [](unsigned char b) { return b != kBondIntact; }));
+    broken_count_ = countBrokenBonds(bond_state_);
     // The saved pairs are the list the first rebuild carries S_ref from (rebuild_requested_ is set).
     contact_i_ = s.contact_i;
     contact_j_ = s.contact_j;

@@ -18,6 +18,17 @@ std::vector<std::string> splitCsvLine(const std::string& line) {
   return fields;
 }
 
+/// RUN/summary.json as a YAML node (JSON is YAML); throws std::runtime_error naming the file.
+YAML::Node loadSummary(const std::string& run_dir) {
+  const std::string path = run_dir + "/summary.json";
+  if (!std::ifstream(path)) throw std::runtime_error("no " + path + ": not a thin_ice_run output directory");
+  try {
+    return YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw std::runtime_error(path + ": " + e.what());
+  }
+}
+
 }  // namespace
 
 std::vector<CsvRow> readCsv(const std::string& path) {
@@ -54,9 +65,7 @@ double csvNumber(const CsvRow& row, const std::string& column, const std::string
 }
 
 Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, std::string& warning) {
-  const std::string summary_path = run_dir + "/summary.json";
-  if (!std::ifstream(summary_path)) throw std::runtime_error("no summary.json: not a thin_ice_run output directory");
-  const YAML::Node summary = YAML::LoadFile(summary_path);  // JSON is YAML
+  const YAML::Node summary = loadSummary(run_dir);
   const std::string file = summary["scenario"]["file"].as<std::string>();
   std::vector<std::string> overrides;
   for (const YAML::Node& o : summary["scenario"]["overrides"]) overrides.push_back(o.as<std::string>());
@@ -77,13 +86,7 @@ Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, s
 
 RunSummary readRunSummary(const std::string& run_dir) {
   const std::string path = run_dir + "/summary.json";
-  if (!std::ifstream(path)) throw std::runtime_error("no " + path + ": not a thin_ice_run output directory");
-  YAML::Node summary;
-  try {
-    summary = YAML::LoadFile(path);  // JSON is YAML
-  } catch (const YAML::Exception& e) {
-    throw std::runtime_error(path + ": " + e.what());
-  }
+  const YAML::Node summary = loadSummary(run_dir);
   auto field = [&](const char* key, const char* allowed) {
     const YAML::Node node = summary[key];
     if (!node) throw std::runtime_error(path + ": no \"" + key + "\" (" + allowed + ")");

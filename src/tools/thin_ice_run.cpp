@@ -562,12 +562,8 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
   });
   auto sim = std::make_unique<Simulation>(scenario, o.backend);  // no device: exit status 1
   aboutTheDirectory(dir, [&] {
-    if (o.accept_changed_scenario) {  // the file's hash changed with it, and the checkpoint has the old one
-      sim->restoreState(checkpoint.state);
-      sim->setPusherVelocity(checkpoint.pusher_velocity);
-    } else {
-      thin_ice::restoreCheckpoint(*sim, checkpoint);
-    }
+    // A changed scenario file changed its hash too; loadRunScenario has already said so.
+    thin_ice::restoreCheckpoint(*sim, checkpoint, o.accept_changed_scenario);
     o.output_interval = summary.output_interval;
 
     // The history so far, which must end where the checkpoint is.
