@@ -167,5 +167,38 @@ TEST(LoadStatistics, LeastSquaresSlopeByHand) {
   EXPECT_TRUE(std::isnan(leastSquaresSlope({1.0, 1.0}, {0.0, 5.0}, 0, 2)));  // no spread in x
 }
 
+/// The rule has no load scale of its own (bands, drift and onset are fractions of a mean), so
+/// scaling F by a factor scales every load statistic by it and moves no window. This is what lets
+/// runs made at one alpha of Eq. (18) be reported at another: alpha multiplies the output only.
+TEST(LoadStatistics, ScalingTheLoadScalesTheStatisticsAndKeepsTheWindows) {
+  Record saw_tooth;  // teeth of 4 kN every 0.19 m over a trough rising 1.2 kN per metre, then flat
+  for (int i = 0; i <= 1000; ++i) {
+    const double l = i * kSampleSpacing;
+    const double trough = 500.0 + 1200.0 * std::min(l, 2.5);
+    const double phase = std::fmod(l, 0.19) / 0.19;
+    saw_tooth.length.push_back(l);
+    saw_tooth.load.push_back(trough + 4000.0 * phase * phase);
+  }
+  for (const Record& r : {rampThenPlateau(6.0), saw_tooth}) {
+    const LoadStatistics base = analyseLoadHistory(r.length, r.load);
+    for (double factor : {1.0 / 0.63, 0.63, 1.7}) {
+      std::vector<double> scaled = r.load;
+      for (double& f : scaled) f *= factor;
+      const LoadStatistics s = analyseLoadHistory(r.length, scaled);
+      SCOPED_TRACE(factor);
+      EXPECT_EQ(s.steady_found, base.steady_found);
+      EXPECT_EQ(s.steady_begin, base.steady_begin);
+      EXPECT_EQ(s.steady_samples, base.steady_samples);
+      EXPECT_EQ(s.phase1_begin, base.phase1_begin);
+      EXPECT_EQ(s.phase1_samples, base.phase1_samples);
+      EXPECT_EQ(s.peak_length, base.peak_length);
+      EXPECT_NEAR(s.peak_load, factor * base.peak_load, 1e-12 * factor * base.peak_load);
+      EXPECT_NEAR(s.steady_mean, factor * base.steady_mean, 1e-12 * factor * base.steady_mean);
+      EXPECT_NEAR(s.steady_std, factor * base.steady_std, 1e-9 * factor * base.steady_std);
+      EXPECT_NEAR(s.phase1_slope, factor * base.phase1_slope, 1e-9 * std::fabs(factor * base.phase1_slope));
+    }
+  }
+}
+
 }  // namespace
 }  // namespace thin_ice

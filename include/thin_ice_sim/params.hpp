@@ -62,7 +62,7 @@ struct StructureParams {
   int panels = 10;                  ///< panels across the width, each reports its load
   double side_panel_length = 0.5;   ///< [m] vertical side plates reaching forward from the toe
   double stiffness = 1.7e11;        ///< K_struct of Eq. (17) [Pa]
-  double calibration_factor = 0.63; ///< alpha of Eq. (18) [-]
+  double calibration_factor = 1.0;  ///< alpha of Eq. (18) [-]; 1: the load does not depend on K_struct
   double friction = 0.1;            ///< ice-structure Coulomb coefficient [-]
 };
 

@@ -165,7 +165,7 @@ Options parseOptions(int argc, char** argv) {
   return o;
 }
 
-/// Table 6 experimental targets (Lemstrom et al.; alpha = 0.63 applies to the model only):
+/// Table 6 experimental targets (Lemstrom et al.; alpha of Eq. (18) applies to the model only):
 /// series letter, steady-state mean F_avg [N], peak F_p [N], where the numbers come from.
 struct Experiment {
   const char* series;
