@@ -337,7 +337,10 @@ def main():
              "scaled by width / 10 m). The steady state is found by the rule written in",
              "`include/thin_ice_sim/load_statistics.hpp`; where the rule finds none, the mean of the last",
              "quarter of the record is shown and marked \"tail mean, not steady\": that is not a steady-state",
-             f"load. Targets (issue #6): {TARGETS}.", "",
+             "load. The phase-1 slope is the least-squares slope of F_cal against L from the first failure",
+             "(from the end of that failure's collapse: the pile begins there) to the start of the steady window;",
+             "its error is given only where there is a steady window.",
+             f"Targets (issue #6): {TARGETS}.", "",
              "## Table 6 layout: model against experiment", "",
              "| run | cells | width [m] | backend | dt [s] / structure sub-steps | L reached of experiment [m] |"
              " F_p model [N] | F_p exp. [N] | error |"

@@ -68,6 +68,44 @@ TEST(LoadStatistics, RampThenPlateau) {
   EXPECT_GT(s.phase1_samples, 100);
 }
 
+/// The ramp of rampThenPlateau with the intact sheet's first failure in front of it: F climbs
+/// linearly to 10 kN at L = 0.08 m, where the first bond breaks, and collapses onto the ramp by
+/// L = 0.09 m, as a row of bonds gives way over a few output intervals.
+TEST(LoadStatistics, PhaseOneStartsWhereTheFirstFailureEnds) {
+  Record r = rampThenPlateau(6.0);
+  constexpr double kFailure = 0.08, kCollapsed = 0.09;  // [m]
+  std::vector<int> broken(r.length.size(), 0);
+  for (size_t i = 0; i < r.length.size(); ++i) {
+    const double l = r.length[i];
+    if (l < kFailure) r.load[i] = 10000.0 * l / kFailure;
+    if (l >= kFailure && l < kCollapsed - 1e-9) {
+      r.load[i] = 10000.0 + (r.load[i] - 10000.0) * (l - kFailure) / (kCollapsed - kFailure);
+    }
+    broken[i] = l >= kFailure ? 5 : 0;
+  }
+  const double failure = firstFailureLength(r.length, broken);
+  EXPECT_DOUBLE_EQ(failure, r.length[16]);  // 16 samples of 5 mm below 0.08 m
+  const double never = firstFailureLength(r.length, std::vector<int>(r.length.size(), 0));
+  EXPECT_TRUE(std::isinf(never) && never > 0.0);
+  // A sheet that never broke has no phase 1, whatever its load did.
+  const LoadStatistics unbroken = analyseLoadHistory(r.length, r.load, SteadyStateRule(), never);
+  EXPECT_TRUE(std::isnan(unbroken.phase1_slope));
+  EXPECT_EQ(unbroken.phase1_samples, 0);
+
+  // The fit starts at the bottom of the collapse, 0.09 m (the ramp's 135 N; the ripple is rising
+  // there, so no later sample within 0.1 m is lower), and sees the ramp alone.
+  const LoadStatistics s = analyseLoadHistory(r.length, r.load, SteadyStateRule(), failure);
+  EXPECT_NEAR(s.phase1_begin, kCollapsed, 1e-9);
+  EXPECT_NEAR(s.phase1_slope, 1500.0, kSlopeTolerance * 1500.0);
+  // Starting on the spike, the same fit is pulled far below the ramp; nothing else changes.
+  const LoadStatistics from_contact = analyseLoadHistory(r.length, r.load);
+  EXPECT_LT(from_contact.phase1_slope, 0.8 * 1500.0);
+  EXPECT_LT(from_contact.phase1_begin, kFailure);
+  EXPECT_EQ(from_contact.steady_begin, s.steady_begin);
+  EXPECT_EQ(from_contact.steady_mean, s.steady_mean);
+  EXPECT_EQ(from_contact.peak_load, s.peak_load);
+}
+
 TEST(LoadStatistics, KeepsRisingIsNotSteady) {
   Record r;
   for (int i = 0; i <= 1200; ++i) {
@@ -168,8 +206,8 @@ TEST(LoadStatistics, LeastSquaresSlopeByHand) {
 }
 
 /// The rule has no load scale of its own (bands, drift and onset are fractions of a mean), so
-/// scaling F by a factor scales every load statistic by it and moves no window. This is what lets
-/// runs made at one alpha of Eq. (18) be reported at another: alpha multiplies the output only.
+/// scaling F by a factor scales every load statistic by it and moves no window: a change of the
+/// structural factor alpha of Eq. (18), which multiplies the output only, changes no verdict.
 TEST(LoadStatistics, ScalingTheLoadScalesTheStatisticsAndKeepsTheWindows) {
   Record saw_tooth;  // teeth of 4 kN every 0.19 m over a trough rising 1.2 kN per metre, then flat
   for (int i = 0; i <= 1000; ++i) {

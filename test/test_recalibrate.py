@@ -4,7 +4,7 @@
 the run's own --set of alpha wins over the scenario file; a run with a checkpoint goes only to the
 alpha a resumed run would write; bad input is refused whole.
 
-    test_recalibrate.py THIN_ICE_RUN SOURCE_DIR
+    test_recalibrate.py THIN_ICE_RUN THIN_ICE_ANALYSE SOURCE_DIR
 """
 import csv
 import json
@@ -15,7 +15,7 @@ import sys
 import tempfile
 
 STATISTICS = ("peak_N", "phase1_slope_N_per_m", "steady_mean_N", "steady_std_N")
-WINDOWS = ("peak_at_m", "steady_found", "steady_window_m", "steady_samples", "phase1_range_m")
+WINDOWS = ("peak_at_m", "first_failure_m", "steady_found", "steady_window_m", "steady_samples", "phase1_range_m")
 
 
 def run(run_tool, source, out, alpha):
@@ -34,8 +34,8 @@ def rows(path):
         return list(csv.DictReader(f))
 
 
-def tool(source, *args):
-    return subprocess.run([sys.executable, os.path.join(source, "scripts/recalibrate"), *args],
+def tool(source, analyse_tool, *args):
+    return subprocess.run([sys.executable, os.path.join(source, "scripts/recalibrate"), "--tool", analyse_tool, *args],
                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
 
 
@@ -44,7 +44,7 @@ def relative(a, b):
 
 
 def main():
-    run_tool, source = sys.argv[1], sys.argv[2]
+    run_tool, analyse_tool, source = sys.argv[1:4]
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
         low, high = os.path.join(tmp, "low"), os.path.join(tmp, "high")
@@ -55,14 +55,14 @@ def main():
             sys.exit("FAIL: the strip never loaded the structure: the comparison would test nothing")
 
         # The run's own --set of alpha wins over the scenario file's value.
-        done = tool(source, low)
+        done = tool(source, analyse_tool, low)
         if done.returncode != 0 or "already at alpha = 0.63" not in done.stdout:
             failures.append(f"default alpha: expected the run's --set 0.63 to be kept, got {done.stdout!r}")
 
         # Bad alpha: refused with the value named, nothing written.
         summary_text = open(os.path.join(low, "summary.json")).read()
         for bad in ("0", "-1", "nan"):
-            done = tool(source, low, "--alpha", bad)
+            done = tool(source, analyse_tool, low, "--alpha", bad)
             if done.returncode != 2 or "alpha must be a finite number > 0" not in done.stderr:
                 failures.append(f"--alpha {bad}: exit {done.returncode}, {done.stderr.strip()!r}")
         if open(os.path.join(low, "summary.json")).read() != summary_text or rows(os.path.join(low, "loads.csv")) != before:
@@ -72,7 +72,7 @@ def main():
         partial = os.path.join(tmp, "partial")
         shutil.copytree(low, partial)
         open(os.path.join(partial, "loads.csv.partial"), "w").close()
-        if tool(source, partial, "--alpha", "1.7").returncode != 2:
+        if tool(source, analyse_tool, partial, "--alpha", "1.7").returncode != 2:
             failures.append("a directory with loads.csv.partial was not refused")
 
         # Without a --set of alpha the scenario file's value is taken (quick.yaml's, read here).
@@ -86,19 +86,19 @@ def main():
         import yaml
         alpha_file = float(yaml.safe_load(open(os.path.join(source, "config/scenarios/quick.yaml")))
                            ["structure"]["calibration_factor"])
-        done = tool(source, from_file)
+        done = tool(source, analyse_tool, from_file)
         got = json.load(open(path)).get("calibration_factor")
         if done.returncode != 0 or got != alpha_file:
             failures.append(f"alpha from the scenario file: {got} against quick.yaml's {alpha_file} ({done.stderr.strip()})")
 
         # A run that can be resumed goes only to the alpha its resumed rows would carry.
-        done = tool(source, low, "--alpha", "1.7")
+        done = tool(source, analyse_tool, low, "--alpha", "1.7")
         if done.returncode != 2 or "has a checkpoint" not in done.stderr:
             failures.append(f"--alpha 1.7 on a run with a checkpoint at 0.63: exit {done.returncode}, {done.stderr.strip()!r}")
         os.remove(os.path.join(low, "checkpoint.bin"))
 
         # 0.63 brought to 1.7 against the run made at 1.7.
-        done = tool(source, low, "--alpha", "1.7")
+        done = tool(source, analyse_tool, low, "--alpha", "1.7")
         if done.returncode != 0:
             failures.append(f"recalibrate 0.63 -> 1.7 failed: {done.stderr.strip()}")
         after, reference = rows(os.path.join(low, "loads.csv")), rows(os.path.join(high, "loads.csv"))

@@ -2,6 +2,7 @@
 """thin_ice_run --resume: a run stopped at t = 0.4 s and resumed to 0.8 s writes the same loads.csv,
 byte for byte, as the run made in one go, and a summary whose statistics cover the whole history;
 one stopped between rows (t = 0.41 s) writes the same rows again from the second row boundary on;
+the first failure, which starts phase 1, is found whether it lies before or after the resumption;
 a directory that cannot be resumed is refused with exit status 2 and left as it was.
 
     test_run_resume.py THIN_ICE_RUN SOURCE_DIR
@@ -26,10 +27,12 @@ def main():
                 "--output-interval", "0.02"]
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
-        whole, split, off_grid = (os.path.join(tmp, d) for d in ("whole", "split", "off_grid"))
+        whole, split, off_grid, early = (os.path.join(tmp, d) for d in ("whole", "split", "off_grid", "early"))
         for args in (scenario + ["--until-time", "0.8", "--out", whole],
                      scenario + ["--until-time", "0.4", "--out", split],
                      ["--resume", split, "--until-time", "0.8"],
+                     scenario + ["--until-time", "0.2", "--out", early],  # before contact: no bond broken yet
+                     ["--resume", early, "--until-time", "0.8"],
                      scenario + ["--until-time", "0.41", "--out", off_grid],
                      ["--resume", off_grid, "--until-time", "0.8"]):
             done = run(tool, args)
@@ -44,11 +47,19 @@ def main():
                             "expected completed, [0.08] ([])")
         if ss["steps"] != sw["steps"] or ss["broken_bonds"] != sw["broken_bonds"]:
             failures.append(f"steps {ss['steps']} / {sw['steps']}, broken bonds {ss['broken_bonds']} / {sw['broken_bonds']}")
-        # The old rows are read back from their nine significant digits.
-        for key in ("peak_N", "steady_mean_N", "phase1_slope_N_per_m"):
-            a, b = sw["load"][key], ss["load"][key]
-            if abs(a - b) > 1e-7 * max(1.0, abs(a)):
-                failures.append(f"load.{key} {b} after resuming, {a} in one go")
+        # The old rows are read back from their nine significant digits. The first failure (which
+        # starts phase 1) lies before the split at 0.4 s and after the one at 0.2 s.
+        se = json.load(open(os.path.join(early, "summary.json")))
+        if sw["load"]["first_failure_m"] is None:
+            failures.append("no bond broke in the strip run: the first failure is not tested")
+        for name, resumed in (("resumed at 0.4 s", ss), ("resumed at 0.2 s", se)):
+            for key in ("peak_N", "steady_mean_N", "phase1_slope_N_per_m", "first_failure_m"):
+                a, b = sw["load"][key], resumed["load"][key]
+                if (a is None) != (b is None) or (a is not None and abs(a - b) > 1e-7 * max(1.0, abs(a))):
+                    failures.append(f"load.{key} {b} {name}, {a} in one go")
+            if resumed["load"]["phase1_range_m"] != sw["load"]["phase1_range_m"]:
+                failures.append(f"phase-1 range {resumed['load']['phase1_range_m']} {name}, "
+                                f"{sw['load']['phase1_range_m']} in one go")
         # Rows 0.02 s apart: after a short row ending at 0.41 s the next ends at 0.42 s (its loads
         # averaged over 0.41-0.42 s only), and from the one after each row is the one-go run's.
         whole_rows = open(os.path.join(whole, "loads.csv")).read().splitlines()

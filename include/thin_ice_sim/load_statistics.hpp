@@ -14,9 +14,17 @@
 // Otherwise the last tail_fraction of the record is reported as a "not steady: tail mean" window
 // with found = false.
 //
-// Phase 1: least-squares slope of F against L over [L_onset, L_stop), where L_onset is the first
-// L at which F exceeds onset_fraction * reference and L_stop is the start of the steady window
-// (or of the tail window when no steady state was found).
+// Phase 1: least-squares slope of F against L over [L_onset, L_stop), where L_stop is the start
+// of the steady window (or of the tail window when no steady state was found). Phase 1 is the
+// rise of the load while the rubble pile grows, and the pile begins with the sheet's first
+// failure, so with a first failure (first_failure_length, the caller's: the first broken bond)
+// L_onset is where that failure's collapse ends: the lowest F within phase1_search_length after
+// it. The intact sheet's elastic loading before it, and the collapse itself, are one event, and a
+// fit that starts on them is governed by them (M-2-long to 2.15 m: 232 N/m from first contact,
+// 1452 N/m from the first broken bond's row, 1397 N/m from the end of the collapse; the end found
+// is the same for search lengths of 0.05, 0.1 and 0.2 m in six runs). A sheet that never failed
+// (first_failure_length = +infinity) has no pile and no phase 1. Where the first failure is not
+// known (NaN), L_onset is the first L at which F exceeds onset_fraction * reference.
 #pragma once
 
 #include <limits>
@@ -34,7 +42,8 @@ struct SteadyStateRule {
   double min_length = 1.0;        ///< [m] shortest steady window accepted
   int min_samples = 10;           ///< [-] fewest samples in the steady window accepted
   double max_drift = 0.10;        ///< [-] largest |trend| over the window, relative to its mean
-  double onset_fraction = 0.05;   ///< [-] phase 1 starts where F first exceeds this x reference
+  double onset_fraction = 0.05;   ///< [-] without a failure, phase 1 starts where F first exceeds this x reference
+  double phase1_search_length = 0.1;  ///< [m] after the first failure, phase 1 starts at the lowest F within this
 };
 
 struct LoadStatistics {
@@ -60,11 +69,17 @@ struct LoadStatistics {
 };
 
 /// Analyses a load history. `pushed_length` [m] must be non-decreasing and as long as `load`
-/// [N]. Never throws on bad data: empty, mismatched, too short, non-finite or decreasing input
-/// gives steady_found = false and steady_rule says what was wrong.
+/// [N]; `first_failure_length` [m] is L at the sheet's first broken bond, after which phase 1
+/// begins (+infinity: no bond broke, so no phase 1; NaN: not known). Never throws on bad data: empty, mismatched, too short, non-finite or
+/// decreasing input gives steady_found = false and steady_rule says what was wrong.
 LoadStatistics analyseLoadHistory(const std::vector<double>& pushed_length,
                                   const std::vector<double>& load,
-                                  const SteadyStateRule& rule = SteadyStateRule());
+                                  const SteadyStateRule& rule = SteadyStateRule(),
+                                  double first_failure_length = LoadStatistics::kNaN);
+
+/// L [m] of the first sample with a broken bond, +infinity when none broke; `broken_bonds` is the
+/// count per sample, as long as `pushed_length`.
+double firstFailureLength(const std::vector<double>& pushed_length, const std::vector<int>& broken_bonds);
 
 /// Least-squares slope dy/dx over samples [first, last) [units of y per unit of x]; NaN when
 /// fewer than two samples or all x are equal.

@@ -35,9 +35,21 @@ struct RunSummary {
   double wall_time = 0.0;          ///< [s] of stepping and output, every segment so far
   long steps = 0;                  ///< time steps taken by the end of the run
   std::vector<double> resumed_at;  ///< [m] pushed lengths at which the run was resumed before
+  std::string scenario_name;       ///< e.g. "M-2": the Table 6 experiment it is compared with
+  double structure_width = 0.0;    ///< [m] structure_width_m (NaN when the summary lacks it)
 };
 /// Throws std::runtime_error naming the file when it is missing or lacks one of these.
 RunSummary readRunSummary(const std::string& run_dir);
+
+/// RUN/loads.csv as the load statistics read it, one entry per row.
+struct LoadHistory {
+  std::vector<double> time;           ///< [s] at the end of each output interval
+  std::vector<double> pushed_length;  ///< [m]
+  std::vector<double> load;           ///< [N] horizontal_calibrated_N, F_cal of Eq. (18)
+  std::vector<int> intact_bonds, broken_bonds;
+};
+/// Throws std::runtime_error naming the file and the column when a row lacks a number.
+LoadHistory readLoadHistory(const std::string& csv_path);
 
 /// One entry of RUN/snapshots/index.csv.
 struct SnapshotEntry {

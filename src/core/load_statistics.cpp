@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdarg>
 #include <cstdio>
+#include <limits>
 
 namespace thin_ice {
 namespace {
@@ -63,6 +64,7 @@ std::string checkRule(const SteadyStateRule& r) {
   if (!(r.min_length >= 0.0)) return "rule.min_length must be >= 0 m";
   if (!(r.max_drift >= 0.0)) return "rule.max_drift must be >= 0";
   if (!(r.onset_fraction >= 0.0)) return "rule.onset_fraction must be >= 0";
+  if (!(r.phase1_search_length >= 0.0)) return "rule.phase1_search_length must be >= 0 m";
   return "";
 }
 
@@ -89,7 +91,8 @@ double leastSquaresSlope(const std::vector<double>& x, const std::vector<double>
 }
 
 LoadStatistics analyseLoadHistory(const std::vector<double>& pushed_length,
-                                  const std::vector<double>& load, const SteadyStateRule& rule) {
+                                  const std::vector<double>& load, const SteadyStateRule& rule,
+                                  double first_failure_length) {
   LoadStatistics s;
   const std::vector<double>& L = pushed_length;
   const std::vector<double>& F = load;
@@ -196,9 +199,19 @@ LoadStatistics analyseLoadHistory(const std::vector<double>& pushed_length,
                            why_not.c_str());
   }
 
-  // --- Phase 1: from the first F above the onset threshold up to the window start. -----------
+  // --- Phase 1: from the end of the first failure's collapse (or, with none, from the first F
+  // above the onset threshold) up to the window start. --------------------------------------------
   size_t onset = 0;
-  if (ref > 0.0) {
+  if (first_failure_length == std::numeric_limits<double>::infinity()) {
+    onset = begin;  // the sheet never failed: no pile, no phase 1
+  } else if (std::isfinite(first_failure_length)) {
+    while (onset < begin && L[onset] < first_failure_length) ++onset;
+    size_t lowest = onset;
+    for (size_t i = onset; i < begin && L[i] <= first_failure_length + rule.phase1_search_length; ++i) {
+      if (F[i] < F[lowest]) lowest = i;
+    }
+    onset = lowest;
+  } else if (ref > 0.0) {
     while (onset < begin && !(F[onset] > rule.onset_fraction * ref)) ++onset;
   }
   if (begin >= onset + 2) {
@@ -208,6 +221,14 @@ LoadStatistics analyseLoadHistory(const std::vector<double>& pushed_length,
     s.phase1_samples = static_cast<int>(begin - onset);
   }
   return s;
+}
+
+double firstFailureLength(const std::vector<double>& pushed_length, const std::vector<int>& broken_bonds) {
+  const size_t n = std::min(pushed_length.size(), broken_bonds.size());
+  for (size_t i = 0; i < n; ++i) {
+    if (broken_bonds[i] > 0) return pushed_length[i];
+  }
+  return std::numeric_limits<double>::infinity();
 }
 
 }  // namespace thin_ice

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -107,7 +108,24 @@ RunSummary readRunSummary(const std::string& run_dir) {
   if (summary["resumed_at_m"]) {
     for (const YAML::Node& l : summary["resumed_at_m"]) r.resumed_at.push_back(l.as<double>());
   }
+  if (summary["scenario"] && summary["scenario"]["name"]) r.scenario_name = summary["scenario"]["name"].as<std::string>();
+  // Not needed to resume, so a missing or null width (jsonNumber's NaN) is NaN here, not an error.
+  const YAML::Node width = summary["structure_width_m"];
+  r.structure_width = width && !width.IsNull() ? number("structure_width_m", 0.0, "a width [m]")
+                                               : std::numeric_limits<double>::quiet_NaN();
   return r;
+}
+
+LoadHistory readLoadHistory(const std::string& csv_path) {
+  LoadHistory h;
+  for (const CsvRow& row : readCsv(csv_path)) {
+    h.time.push_back(csvNumber(row, "time_s", csv_path));
+    h.pushed_length.push_back(csvNumber(row, "pushed_length_m", csv_path));
+    h.load.push_back(csvNumber(row, "horizontal_calibrated_N", csv_path));
+    h.intact_bonds.push_back(static_cast<int>(csvNumber(row, "intact_bonds", csv_path)));
+    h.broken_bonds.push_back(static_cast<int>(csvNumber(row, "broken_bonds", csv_path)));
+  }
+  return h;
 }
 
 std::vector<SnapshotEntry> readSnapshotIndex(const std::string& run_dir) {

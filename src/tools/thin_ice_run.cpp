@@ -27,7 +27,6 @@
 
 #include <algorithm>
 #include <atomic>
-#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -36,6 +35,7 @@
 #include <fstream>
 #include <iostream>
 #include <iterator>
+#include <limits>
 #include <memory>
 #include <set>
 #include <sstream>
@@ -48,12 +48,15 @@
 #include "thin_ice_sim/load_statistics.hpp"
 #include "thin_ice_sim/rubble_profiles.hpp"
 #include "thin_ice_sim/run_directory.hpp"
+#include "thin_ice_sim/run_report.hpp"
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/sheet_io.hpp"
 #include "thin_ice_sim/simulation.hpp"
 
 namespace {
 
+using thin_ice::jsonNumber;
+using thin_ice::jsonString;
 using thin_ice::LoadSample;
 using thin_ice::Simulation;
 using Clock = std::chrono::steady_clock;
@@ -165,50 +168,6 @@ Options parseOptions(int argc, char** argv) {
   return o;
 }
 
-/// Table 6 experimental targets (Lemstrom et al.; alpha of Eq. (18) applies to the model only):
-/// series letter, steady-state mean F_avg [N], peak F_p [N], where the numbers come from.
-struct Experiment {
-  const char* series;
-  double mean, peak;
-  const char* source;
-};
-
-const Experiment* experimentFor(const std::string& scenario_name) {
-  static const Experiment kTable6[] = {
-      {"W", 8600.0, 15790.0, "Table 6 / Fig. 10: W-3 steady state and peak"},
-      {"M", 7820.0, 12700.0, "Table 6 / Fig. 11: M-2 steady state and peak"},
-      {"S", 13750.0, 20560.0, "Table 6 / Fig. 12: S-2 steady state, S-1 peak"}};
-  if (scenario_name.size() < 2 || scenario_name[1] != '-') return nullptr;
-  for (const Experiment& e : kTable6) {
-    if (std::toupper(static_cast<unsigned char>(scenario_name[0])) == e.series[0]) return &e;
-  }
-  return nullptr;
-}
-
-std::string jsonString(const std::string& text) {
-  std::string out = "\"";
-  for (const char c : text) {
-    if (c == '"' || c == '\\') {
-      out += std::string("\\") + c;
-    } else if (static_cast<unsigned char>(c) < 0x20) {  // control characters: \u00XX
-      char code[8];
-      std::snprintf(code, sizeof(code), "\\u%04x", static_cast<unsigned>(c));
-      out += code;
-    } else {
-      out += c;  // UTF-8 bytes pass through
-    }
-  }
-  return out + "\"";
-}
-
-/// JSON has no NaN or infinity: those become null.
-std::string jsonNumber(double value) {
-  if (!std::isfinite(value)) return "null";
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.10g", value);
-  return text;
-}
-
 std::string loadsHeader(std::size_t panels) {
   std::string header =
       "time_s,pushed_length_m,horizontal_raw_N,horizontal_calibrated_N,vertical_raw_N,"
@@ -297,6 +256,7 @@ struct Continuation {
   std::string previous_csv;           ///< loads.csv as it was, header included
   long rows = 0;                      ///< its data rows
   std::vector<double> length, load;   ///< its history [m], [N] calibrated
+  double first_failure_length = std::numeric_limits<double>::infinity();  ///< [m] its first broken bond, +infinity: none yet
   LoadSample last;                    ///< its last row (time, length, bond counts)
   double previous_wall = 0.0;         ///< [s] of the segments before
   std::vector<double> resumed_at;     ///< [m] where each resumption began, this one last
@@ -305,6 +265,7 @@ struct Continuation {
 
 struct RunResult {
   std::vector<double> length, load;  // [m], [N] calibrated: the history analysed
+  double first_failure_length = std::numeric_limits<double>::infinity();  // [m] L of the first row with a broken bond, +infinity: none
   double wall = 0.0;                 // [s] of stepping and output
   LoadSample last;                   // the last row written (zero loads before the first)
   std::string error;                 // empty when the run reached its target
@@ -326,6 +287,7 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
   RunResult r;
   r.length = cont.length;
   r.load = cont.load;
+  r.first_failure_length = cont.first_failure_length;
   r.last = cont.last;
   const double dt = sim.timeStep(), velocity = sim.pusherVelocity();
   const long steps_per_row = std::max(1L, std::lround(o.output_interval / dt));
@@ -396,6 +358,7 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
     csv << loadsRow(r.last, panels) << std::flush;
     r.length.push_back(r.last.pushed_length);
     r.load.push_back(r.last.horizontal_calibrated);
+    if (std::isinf(r.first_failure_length) && r.last.broken_bonds > 0) r.first_failure_length = r.last.pushed_length;
     // A signal in the interval that reached the target changes nothing: the run is complete.
     r.interrupted_by = stepsLeft() > 0 ? g_stop_signal.load() : 0;
     const bool last_row = stepsLeft() <= 0 || r.interrupted_by != 0;
@@ -418,12 +381,7 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
   return r;
 }
 
-/// Table 6 loads are for the experiment's 10 m wide structure (Table 4): a narrower slice of the
-/// same set-up is compared with them scaled by its width (load per metre of structure).
-double widthScale(const Simulation& sim) {
-  constexpr double kExperimentWidth = 10.0;  // [m]
-  return sim.params().structure.width / kExperimentWidth;
-}
+double widthScale(const Simulation& sim) { return thin_ice::experimentWidthScale(sim.params().structure.width); }
 
 /// The rubble pile's side profile (height against x, 0.1 m bins from 4 m in front of the toe) and
 /// top profile (distance from the toe against y), as the paper's Figs. 13 and 15.
@@ -466,16 +424,7 @@ std::string summaryJson(const Simulation& sim, const Options& o, const RunResult
   j << "]"
     << ",\n  \"intact_bonds\": " << last.intact_bonds << ", \"broken_bonds\": " << last.broken_bonds
     << ",\n  \"calibration_factor\": " << num(sc.params.structure.calibration_factor)
-    << ",\n  \"load\": {\n    \"quantity\": \"horizontal_calibrated_N against pushed_length_m\""
-    << ",\n    \"samples\": " << s.samples
-    << ",\n    \"peak_N\": " << num(s.peak_load) << ", \"peak_at_m\": " << num(s.peak_length)
-    << ",\n    \"phase1_slope_N_per_m\": " << num(s.phase1_slope)
-    << ", \"phase1_range_m\": [" << num(s.phase1_begin) << ", " << num(s.phase1_end) << "]"
-    << ",\n    \"steady_found\": " << (s.steady_found ? "true" : "false")
-    << ",\n    \"steady_window_m\": [" << num(s.steady_begin) << ", " << num(s.steady_end) << "]"
-    << ",\n    \"steady_mean_N\": " << num(s.steady_mean) << ", \"steady_std_N\": "
-    << num(s.steady_std) << ", \"steady_samples\": " << s.steady_samples
-    << ",\n    \"steady_rule\": " << jsonString(s.steady_rule) << "\n  }";
+    << ",\n  \"load\": " << thin_ice::loadJson(s, r.first_failure_length);
   j << ",\n  \"structure_width_m\": " << num(sim.params().structure.width);
   // The geometry the run used, overrides applied, so that a reader (the validation report's
   // profile plots) draws the face without re-reading the scenario file.
@@ -488,14 +437,7 @@ std::string summaryJson(const Simulation& sim, const Options& o, const RunResult
     j << "{\"depth_m\": " << num(sim.params().bottom.depth)
       << ", \"distance_from_structure_m\": " << num(sim.params().bottom.distance_from_structure) << "}";
   }
-  j << ",\n  \"experiment\": " << (experimentFor(sc.name) ? "" : "null");
-  if (const Experiment* e = experimentFor(sc.name)) {
-    const double k = widthScale(sim), mean = k * e->mean, peak = k * e->peak;
-    j << "{\"series\": " << jsonString(e->series) << ", \"source\": " << jsonString(e->source)
-      << ", \"width_scale\": " << num(k) << ", \"steady_mean_N\": " << num(mean) << ", \"peak_N\": "
-      << num(peak) << ",\n    \"steady_mean_error_percent\": " << num(100.0 * (s.steady_mean - mean) / mean)
-      << ", \"peak_error_percent\": " << num(100.0 * (s.peak_load - peak) / peak) << "}";
-  }
+  j << ",\n  \"experiment\": " << thin_ice::experimentJson(sc.name, sim.params().structure.width, s);
   j << "\n}\n";
   return j.str();
 }
@@ -505,7 +447,7 @@ void printReport(const Simulation& sim, const Options& o, const thin_ice::LoadSt
               "slope %.5g N/m\n  %s\n", sim.scenario().name.c_str(), sim.backendName().c_str(),
               sim.time(), sim.pushedLength(), sim.stepCount(), s.peak_load, s.peak_length,
               s.phase1_slope, s.steady_rule.c_str());
-  if (const Experiment* e = experimentFor(sim.scenario().name)) {
+  if (const thin_ice::Experiment* e = thin_ice::experimentFor(sim.scenario().name)) {
     const double k = widthScale(sim), mean = k * e->mean, peak = k * e->peak;
     std::printf("  experiment (%s, x %.3g for a %.3g m structure): mean %.0f N (%+.1f%%), peak %.0f N (%+.1f%%)\n",
                 e->source, k, sim.params().structure.width, mean, 100.0 * (s.steady_mean - mean) / mean, peak,
@@ -578,15 +520,17 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
                         " panels (" + header.substr(0, header.size() - 1) + ")");
     }
     if (cont.previous_csv.back() != '\n') throw ResumeError(csv_path + ": its last row is cut short (no line end)");
-    for (const thin_ice::CsvRow& row : thin_ice::readCsv(csv_path)) {
-      cont.length.push_back(thin_ice::csvNumber(row, "pushed_length_m", csv_path));
-      cont.load.push_back(thin_ice::csvNumber(row, "horizontal_calibrated_N", csv_path));
-      cont.last.time = thin_ice::csvNumber(row, "time_s", csv_path);
-      cont.last.pushed_length = cont.length.back();
-      cont.last.intact_bonds = static_cast<int>(thin_ice::csvNumber(row, "intact_bonds", csv_path));
-      cont.last.broken_bonds = static_cast<int>(thin_ice::csvNumber(row, "broken_bonds", csv_path));
-    }
+    const thin_ice::LoadHistory history = thin_ice::readLoadHistory(csv_path);
+    cont.length = history.pushed_length;
+    cont.load = history.load;
+    cont.first_failure_length = thin_ice::firstFailureLength(history.pushed_length, history.broken_bonds);
     cont.rows = static_cast<long>(cont.length.size());
+    if (cont.rows > 0) {
+      cont.last.time = history.time.back();
+      cont.last.pushed_length = history.pushed_length.back();
+      cont.last.intact_bonds = history.intact_bonds.back();
+      cont.last.broken_bonds = history.broken_bonds.back();
+    }
     // Rows hold nine significant digits; the step count above is the exact check.
     if (cont.rows == 0 || std::fabs(cont.last.time - sim->time()) > 1e-8 * std::max(1.0, sim->time())) {
       throw ResumeError(csv_path + " ends at t = " + (cont.rows ? jsonNumber(cont.last.time) : std::string("(no rows)")) +
@@ -656,7 +600,8 @@ int main(int argc, char** argv) {
                    "unhealthy_segment.csv there)\n", options.out.c_str());
       return 3;
     }
-    const auto stats = thin_ice::analyseLoadHistory(result.length, result.load);
+    const auto stats = thin_ice::analyseLoadHistory(result.length, result.load, thin_ice::SteadyStateRule(),
+                                                    result.first_failure_length);
     // The checkpoint first: a summary that says "completed" or "interrupted" has one beside it
     // that matches its loads.csv. An unhealthy state is not worth going on from.
     const std::string checkpoint_path = options.out + "/checkpoint.bin";

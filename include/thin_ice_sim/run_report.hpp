@@ -1,0 +1,40 @@
+// What thin_ice_run writes about a run's loads in summary.json, shared with thin_ice_analyse so
+// that a finished run's statistics can be worked out again with the same code: the experiment of
+// Table 6 that a series is compared with, and the "load" and "experiment" objects.
+#pragma once
+
+#include <string>
+
+#include "thin_ice_sim/load_statistics.hpp"
+
+namespace thin_ice {
+
+/// A Table 6 experiment (Lemstrom et al.): series letter, steady-state mean F_avg [N] and peak
+/// F_p [N] on the experiment's 10 m wide structure, and where the numbers come from.
+struct Experiment {
+  const char* series;
+  double mean, peak;
+  const char* source;
+};
+
+/// The experiment a scenario named "W-3", "M-1", ... is compared with; nullptr for other names.
+const Experiment* experimentFor(const std::string& scenario_name);
+
+/// Table 6 loads are for the 10 m wide structure of Table 4: a narrower slice of the same set-up
+/// is compared with them scaled by its width (load per metre of structure) [-].
+double experimentWidthScale(double structure_width);
+
+/// A JSON string literal (quotes, backslashes and control characters escaped).
+std::string jsonString(const std::string& text);
+/// A JSON number with ten significant digits; NaN and infinity (which JSON lacks) become null.
+std::string jsonNumber(double value);
+
+/// summary.json's "load" object (no trailing newline), indented as thin_ice_run writes it:
+/// the statistics of F_cal against L and the first failure that starts phase 1 [m].
+std::string loadJson(const LoadStatistics& s, double first_failure_length);
+
+/// summary.json's "experiment" object for `scenario_name` on a structure `structure_width` [m]
+/// wide, with the errors of `s` against it; "null" when the scenario has no experiment.
+std::string experimentJson(const std::string& scenario_name, double structure_width, const LoadStatistics& s);
+
+}  // namespace thin_ice

@@ -1,0 +1,55 @@
+"""Writing a thin_ice_run summary.json again from Python (scripts/recalibrate, scripts/reanalyse):
+the load statistics from thin_ice_analyse (the C++ code thin_ice_run uses), one layout, and files
+replaced only when whole."""
+import json
+import os
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BUILDS = (".ws/devel/lib/thin_ice_sim/thin_ice_analyse", ".ws/build_core_only/bin/thin_ice_analyse")
+
+
+def default_analyse_tool(caller):
+    """thin_ice_analyse of the catkin build, else of the plain CMake build, under .ws."""
+    for relative in BUILDS:
+        path = os.path.join(ROOT, relative)
+        if os.access(path, os.X_OK):
+            return path
+    sys.exit(f"{caller}: no thin_ice_analyse under {' or '.join(BUILDS)}: build first, or give --tool")
+
+
+def analyse(tool, run_dir):
+    """summary.json's "load" and "experiment" objects worked out from RUN_DIR/loads.csv by
+    thin_ice_analyse; raises RuntimeError with its message when it refuses the directory."""
+    done = subprocess.run([tool, run_dir], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=600)
+    if done.returncode != 0:
+        raise RuntimeError(done.stderr.strip() or f"thin_ice_analyse exit status {done.returncode}")
+    fresh = json.loads(done.stdout)
+    return fresh["load"], fresh["experiment"]
+
+
+def _json(value, indent):
+    """value as JSON: objects one key per line, lists of plain values on one line."""
+    pad, inner = " " * indent, " " * (indent + 2)
+    if isinstance(value, dict) and value:
+        items = (f"{inner}{json.dumps(k)}: {_json(v, indent + 2)}" for k, v in value.items())
+        return "{\n" + ",\n".join(items) + "\n" + pad + "}"
+    if isinstance(value, list) and any(isinstance(v, (dict, list)) for v in value):
+        return "[\n" + ",\n".join(inner + _json(v, indent + 2) for v in value) + "\n" + pad + "]"
+    return json.dumps(value, separators=(", ", ": "))
+
+
+def summary_text(summary):
+    """summary.json one key per line, with lists of numbers kept on one line as thin_ice_run has them."""
+    return _json(summary, 0) + "\n"
+
+
+def replace_files(contents):
+    """contents: {path: text}. Every file is written beside its old one first and then renamed
+    over it, so that a failure while writing leaves the old files as they were."""
+    for path, text in contents.items():
+        with open(path + ".new", "w", newline="") as f:
+            f.write(text)
+    for path in contents:
+        os.replace(path + ".new", path)

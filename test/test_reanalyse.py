@@ -1,0 +1,85 @@
+#!/usr/bin/python3
+"""scripts/reanalyse with thin_ice_analyse against thin_ice_run's own summary: the statistics
+worked out again from a finished run's loads.csv must be those the run wrote at its end (to the
+nine digits of loads.csv), the first failure included; a summary whose statistics were spoiled
+gets them back; a directory that is not a finished run is refused and left alone.
+
+    test_reanalyse.py THIN_ICE_RUN THIN_ICE_ANALYSE SOURCE_DIR
+"""
+import json
+import os
+import shutil
+import subprocess
+import sys
+import tempfile
+
+
+def close(a, b):
+    if isinstance(a, list) and isinstance(b, list):
+        return len(a) == len(b) and all(close(x, y) for x, y in zip(a, b))
+    if isinstance(a, float) or isinstance(b, float):
+        return isinstance(a, (int, float)) and isinstance(b, (int, float)) and abs(a - b) <= 1e-7 * max(abs(b), 1e-3)
+    return a == b
+
+
+def main():
+    run_tool, analyse_tool, source = sys.argv[1:4]
+    failures = []
+    with tempfile.TemporaryDirectory() as tmp:
+        run = os.path.join(tmp, "run")
+        # quick.yaml cut to a 1 m strip 0.1 m from the structure: contact after ~0.27 s, bonds break.
+        cmd = [run_tool, "--scenario", os.path.join(source, "config/scenarios/quick.yaml"), "--until-time", "0.6",
+               "--set", "sheet.length=1.0", "--set", "structure.toe_x=1.1",
+               "--set", "bottom.distance_from_structure=0.5", "--out", run]
+        done = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=300)
+        if done.returncode != 0:
+            sys.exit(f"FAIL: thin_ice_run exit status {done.returncode}: {done.stderr.strip()}")
+        path = os.path.join(run, "summary.json")
+        original = json.load(open(path))
+        if original["load"].get("first_failure_m") is None:
+            sys.exit("FAIL: no bond broke in the strip run: the first failure would not be tested")
+
+        spoiled = dict(original)
+        spoiled["load"] = {"peak_N": 0.0}
+        spoiled["experiment"] = None
+        json.dump(spoiled, open(path, "w"))
+        reanalyse = [sys.executable, os.path.join(source, "scripts/reanalyse"), "--tool", analyse_tool,
+                     "--reason", "test"]
+        done = subprocess.run(reanalyse + [run], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=120)
+        if done.returncode != 0:
+            failures.append(f"reanalyse failed: {done.stderr.strip()}")
+        again = json.load(open(path))
+        for block in ("load", "experiment"):
+            want, got = original.get(block), again.get(block)
+            if want is None or got is None:
+                if want != got:
+                    failures.append(f"{block}: {got} against {want}")
+                continue
+            for key in want:
+                if not close(got.get(key), want[key]):
+                    failures.append(f"{block}.{key}: {got.get(key)} against the run's {want[key]}")
+        if (again.get("reanalyses") or [{}])[-1].get("why") != "test":
+            failures.append(f"reanalyses: {again.get('reanalyses')}")
+        if any(again.get(k) != original.get(k) for k in original if k not in ("load", "experiment")):
+            failures.append("a part of summary.json other than load and experiment changed")
+
+        # Refused, and left alone: a run still writing, and a directory without a summary.
+        partial = os.path.join(tmp, "partial")
+        shutil.copytree(run, partial)
+        open(os.path.join(partial, "loads.csv.partial"), "w").close()
+        before = open(os.path.join(partial, "summary.json")).read()
+        empty = os.path.join(tmp, "empty")
+        os.mkdir(empty)
+        done = subprocess.run(reanalyse + [partial, empty], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                              timeout=120)
+        if done.returncode != 2 or "loads.csv.partial" not in done.stderr or "summary.json" not in done.stderr:
+            failures.append(f"bad directories: exit {done.returncode}, {done.stderr.strip()!r}")
+        if open(os.path.join(partial, "summary.json")).read() != before:
+            failures.append("a refused run was changed")
+    if failures:
+        sys.exit("FAIL: " + "; ".join(failures))
+    print("OK: the statistics worked out again from loads.csv are those the run wrote")
+
+
+if __name__ == "__main__":
+    main()
