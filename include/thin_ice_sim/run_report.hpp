@@ -24,6 +24,17 @@ const Experiment* experimentFor(const std::string& scenario_name);
 /// is compared with them scaled by its width (load per metre of structure) [-].
 double experimentWidthScale(double structure_width);
 
+/// A run's load statistics beside the experiment of its series (experiment nullptr: none).
+struct ExperimentComparison {
+  const Experiment* experiment = nullptr;
+  double width_scale = 1.0;         ///< [-] the run's structure width / 10 m
+  double mean = 0.0, peak = 0.0;    ///< [N] the experiment's steady mean and peak, scaled by width
+  double mean_error_percent = 0.0;  ///< 100 (model - experiment) / experiment, steady mean
+  double peak_error_percent = 0.0;  ///< the same for the peak
+};
+ExperimentComparison compareWithExperiment(const std::string& scenario_name, double structure_width,
+                                           const LoadStatistics& s);
+
 /// A JSON string literal (quotes, backslashes and control characters escaped).
 std::string jsonString(const std::string& text);
 /// A JSON number with ten significant digits; NaN and infinity (which JSON lacks) become null.

@@ -64,16 +64,28 @@ std::string loadJson(const LoadStatistics& s, double first_failure_length) {
   return j.str();
 }
 
+ExperimentComparison compareWithExperiment(const std::string& scenario_name, double structure_width,
+                                           const LoadStatistics& s) {
+  ExperimentComparison c;
+  c.experiment = experimentFor(scenario_name);
+  if (!c.experiment) return c;
+  c.width_scale = experimentWidthScale(structure_width);
+  c.mean = c.width_scale * c.experiment->mean;
+  c.peak = c.width_scale * c.experiment->peak;
+  c.mean_error_percent = 100.0 * (s.steady_mean - c.mean) / c.mean;
+  c.peak_error_percent = 100.0 * (s.peak_load - c.peak) / c.peak;
+  return c;
+}
+
 std::string experimentJson(const std::string& scenario_name, double structure_width, const LoadStatistics& s) {
-  const Experiment* e = experimentFor(scenario_name);
-  if (!e) return "null";
-  const double k = experimentWidthScale(structure_width), mean = k * e->mean, peak = k * e->peak;
+  const ExperimentComparison c = compareWithExperiment(scenario_name, structure_width, s);
+  if (!c.experiment) return "null";
   std::ostringstream j;
-  j << "{\"series\": " << jsonString(e->series) << ", \"source\": " << jsonString(e->source)
-    << ", \"width_scale\": " << jsonNumber(k) << ", \"steady_mean_N\": " << jsonNumber(mean)
-    << ", \"peak_N\": " << jsonNumber(peak)
-    << ",\n    \"steady_mean_error_percent\": " << jsonNumber(100.0 * (s.steady_mean - mean) / mean)
-    << ", \"peak_error_percent\": " << jsonNumber(100.0 * (s.peak_load - peak) / peak) << "}";
+  j << "{\"series\": " << jsonString(c.experiment->series) << ", \"source\": " << jsonString(c.experiment->source)
+    << ", \"width_scale\": " << jsonNumber(c.width_scale) << ", \"steady_mean_N\": " << jsonNumber(c.mean)
+    << ", \"peak_N\": " << jsonNumber(c.peak)
+    << ",\n    \"steady_mean_error_percent\": " << jsonNumber(c.mean_error_percent)
+    << ", \"peak_error_percent\": " << jsonNumber(c.peak_error_percent) << "}";
   return j.str();
 }
 

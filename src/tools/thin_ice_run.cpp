@@ -381,8 +381,6 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
   return r;
 }
 
-double widthScale(const Simulation& sim) { return thin_ice::experimentWidthScale(sim.params().structure.width); }
-
 /// The rubble pile's side profile (height against x, 0.1 m bins from 4 m in front of the toe) and
 /// top profile (distance from the toe against y), as the paper's Figs. 13 and 15.
 void writeProfiles(const Simulation& sim, const std::string& path) {
@@ -447,11 +445,12 @@ void printReport(const Simulation& sim, const Options& o, const thin_ice::LoadSt
               "slope %.5g N/m\n  %s\n", sim.scenario().name.c_str(), sim.backendName().c_str(),
               sim.time(), sim.pushedLength(), sim.stepCount(), s.peak_load, s.peak_length,
               s.phase1_slope, s.steady_rule.c_str());
-  if (const thin_ice::Experiment* e = thin_ice::experimentFor(sim.scenario().name)) {
-    const double k = widthScale(sim), mean = k * e->mean, peak = k * e->peak;
+  const thin_ice::ExperimentComparison c =
+      thin_ice::compareWithExperiment(sim.scenario().name, sim.params().structure.width, s);
+  if (c.experiment) {
     std::printf("  experiment (%s, x %.3g for a %.3g m structure): mean %.0f N (%+.1f%%), peak %.0f N (%+.1f%%)\n",
-                e->source, k, sim.params().structure.width, mean, 100.0 * (s.steady_mean - mean) / mean, peak,
-                100.0 * (s.peak_load - peak) / peak);
+                c.experiment->source, c.width_scale, sim.params().structure.width, c.mean, c.mean_error_percent,
+                c.peak, c.peak_error_percent);
   }
   std::printf("wrote %s/loads.csv and %s/summary.json\n", o.out.c_str(), o.out.c_str());
 }
