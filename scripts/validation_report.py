@@ -31,23 +31,23 @@ def load_runs(root):
     return runs
 
 
-def record(root, name):
-    """What a run's loads.csv says beyond its summary: the pushed length at the first broken bond
-    [m] (None if none broke), the mean F_cal over the whole record [N], the broken bonds at the end,
-    and the history itself (L, F_cal) for the comparison plots."""
+def record(root, name, summary):
+    """What a run's loads.csv says beyond its summary: the mean F_cal over the whole record [N],
+    the broken bonds at the end, and the history itself (L, F_cal) for the comparison plots; with
+    the pushed length at the first broken bond [m] (None if none broke) as thin_ice_run's summary
+    gives it."""
     path = os.path.join(root, name, "loads.csv")
     if not os.path.exists(path):
         return None
-    lengths, loads, first_failure, broken = [], [], None, 0
+    lengths, loads, broken = [], [], 0
     with open(path, newline="") as f:
         for r in csv.DictReader(f):
             lengths.append(float(r["pushed_length_m"]))
             loads.append(float(r["horizontal_calibrated_N"]))
             broken = int(r["broken_bonds"])
-            if first_failure is None and broken > 0:
-                first_failure = lengths[-1]
     if not loads:
         return None
+    first_failure = (summary.get("load") or {}).get("first_failure_m")
     return {"first_failure_m": first_failure, "record_mean_N": sum(loads) / len(loads), "broken_end": broken,
             "lengths": lengths, "loads": loads}
 
@@ -354,7 +354,7 @@ def main():
               + "; ".join(f"{k}: F_p {v[0]} N, F_avg {v[1]} N" for k, v in PAPER_TIM.items()) + ".", ""]
 
     # Seed spread and resolution checks.
-    histories = {n: record(a.runs, n) for n in runs}
+    histories = {n: record(a.runs, n, runs[n]) for n in runs}
     spread, tail_spreads = [], []
     for sid in SERIES:
         names = [n for n in runs if re.fullmatch(re.escape(sid) + r"(-seed\d+)?", n)]
