@@ -20,13 +20,16 @@ def default_analyse_tool(caller):
 
 
 def analyse(tool, run_dir):
-    """summary.json's "load" and "experiment" objects worked out from RUN_DIR/loads.csv by
-    thin_ice_analyse; raises RuntimeError with its message when it refuses the directory."""
-    done = subprocess.run([tool, run_dir], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=600)
+    """thin_ice_analyse's answer for RUN_DIR: summary.json's "load" and "experiment" objects worked
+    out from its loads.csv, and "scenario_calibration_factor", the alpha its scenario gives now
+    (None, with "scenario_error", when the scenario cannot be loaded). Run from the repository
+    root, where the runs' relative scenario paths start; raises RuntimeError with the tool's
+    message when it refuses the directory."""
+    done = subprocess.run([tool, os.path.abspath(run_dir)], cwd=ROOT, stdout=subprocess.PIPE,
+                          stderr=subprocess.PIPE, text=True, timeout=600)
     if done.returncode != 0:
         raise RuntimeError(done.stderr.strip() or f"thin_ice_analyse exit status {done.returncode}")
-    fresh = json.loads(done.stdout)
-    return fresh["load"], fresh["experiment"]
+    return json.loads(done.stdout)
 
 
 def _json(value, indent):

@@ -1,8 +1,10 @@
 // thin_ice_analyse: works out a finished run's load statistics again from its loads.csv, with the
 // code thin_ice_run uses at the end of a run (load_statistics.hpp, run_report.hpp), and prints
-// summary.json's "load" and "experiment" objects as one JSON object on stdout. For runs made
-// before a change to the statistics; scripts/reanalyse puts the objects into the run's
-// summary.json.
+// summary.json's "load" and "experiment" objects as one JSON object on stdout, with the alpha of
+// Eq. (18) that the run's scenario gives now ("scenario_calibration_factor"; the scenario file is
+// taken relative to the current directory, as thin_ice_run was given it). For runs made before a
+// change to the statistics or to alpha; scripts/reanalyse and scripts/recalibrate put the objects
+// into the run's summary.json.
 //   thin_ice_analyse RUN_DIR
 // Exit status: 0 done; 2 bad arguments, or RUN_DIR is not a finished thin_ice_run directory.
 #include <cstdio>
@@ -40,8 +42,20 @@ int main(int argc, char** argv) {
     const double first_failure = thin_ice::firstFailureLength(h.pushed_length, h.broken_bonds);
     const thin_ice::LoadStatistics s =
         thin_ice::analyseLoadHistory(h.pushed_length, h.load, thin_ice::SteadyStateRule(), first_failure);
+    // alpha of Eq. (18) that the run's scenario (file as it stands now, with the run's overrides)
+    // gives, for scripts/recalibrate; null, with the reason, when the scenario cannot be loaded.
+    std::string alpha = "null", scenario_error = "null";
+    try {
+      std::string changed;  // a changed file is what is asked for here: its alpha now
+      alpha = thin_ice::jsonNumber(
+          thin_ice::loadRunScenario(dir, true, changed).params.structure.calibration_factor);
+    } catch (const std::exception& e) {
+      scenario_error = thin_ice::jsonString(e.what());
+    }
     std::cout << "{\n  \"load\": " << thin_ice::loadJson(s, first_failure) << ",\n  \"experiment\": "
-              << thin_ice::experimentJson(summary.scenario_name, summary.structure_width, s) << "\n}\n";
+              << thin_ice::experimentJson(summary.scenario_name, summary.structure_width, s)
+              << ",\n  \"scenario_calibration_factor\": " << alpha << ", \"scenario_error\": " << scenario_error
+              << "\n}\n";
     return 0;
   } catch (const std::exception& e) {
     std::cerr << "thin_ice_analyse: " << dir << ": " << e.what() << "\n";
