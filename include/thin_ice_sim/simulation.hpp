@@ -103,6 +103,9 @@ class Simulation {
   std::string backendName() const;
   /// One line on how the backend was chosen (e.g. why `auto` fell back to the CPU).
   const std::string& backendNote() const { return backend_note_; }
+  /// The host instruction set this build's CPU code was compiled for ("x86-64-v3", "baseline":
+  /// CMake's THIN_ICE_CPU_LEVEL); results differ between levels in the last bits.
+  static const char* cpuInstructionSet();
 
   /// The state between steps, for a checkpoint (thin_ice_sim/checkpoint.hpp; the pusher's
   /// velocity is not in it).

@@ -155,6 +155,8 @@ std::vector<CellSnapshot> Simulation::cells() const { return backend_->cells(); 
 int Simulation::cellCount() const { return model_->cell_count; }
 std::string Simulation::backendName() const { return backend_->name(); }
 
+const char* Simulation::cpuInstructionSet() { return THIN_ICE_CPU_LEVEL_NAME; }
+
 std::vector<Vec2> Simulation::cellPolygon(int k) const {
   if (k < 0 || k >= model_->cell_count) return {};
   return cellPolygon(k, backend_->cells()[k]);

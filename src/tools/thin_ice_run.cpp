@@ -405,6 +405,7 @@ std::string summaryJson(const Simulation& sim, const Options& o, const RunResult
   }
   j << "]},\n  \"backend\": " << jsonString(sim.backendName())
     << ", \"backend_note\": " << jsonString(sim.backendNote())
+    << ", \"cpu_instruction_set\": " << jsonString(Simulation::cpuInstructionSet())
     << ",\n  \"cells\": " << sim.cellCount() << ", \"time_step_s\": " << num(sim.timeStep())
     << ", \"critical_time_step_s\": " << num(sim.criticalTimeStep())
     << ", \"structure_substeps\": " << sim.structureSubsteps()
