@@ -193,6 +193,11 @@ def dem_section(run, out, lines):
         s = json.load(f)
     with open(tim) as f:
         t = json.load(f)
+    base_path = os.path.join(run, "tim_dem_baseline", "summary.json")
+    base = None
+    if os.path.exists(base_path):
+        with open(base_path) as f:
+            base = json.load(f)
     loop = None
     with open(log) as f:
         for line in f:
@@ -207,11 +212,17 @@ def dem_section(run, out, lines):
     lig_per_sim = wall / sim_time
     tim_per_sim = t["wall_time_s"] / t["simulated_time_s"]
     tim_steps = round(t["simulated_time_s"] / t["time_step_s"])
+    isa = t.get("cpu_instruction_set", "instruction set not recorded")
     table = ["| model | bodies | time step [s] | steps | simulated [s] | wall [s] | wall per simulated second [s] |",
              "|---|---:|---:|---:|---:|---:|---:|",
              f"| LIGGGHTS 3.8 (3-D DEM) | {atoms} spheres | {s['dt']:.3g} | {steps} | {sim_time:.4g} | {wall:.2f} | {lig_per_sim:.4g} |",
-             f"| thin_ice_sim CPU | {t['cells']} cells | {t['time_step_s']:.3g} | {tim_steps} | {t['simulated_time_s']:.4g} | "
+             f"| thin_ice_sim CPU ({isa}) | {t['cells']} cells | {t['time_step_s']:.3g} | {tim_steps} | {t['simulated_time_s']:.4g} | "
              f"{t['wall_time_s']:.2f} | {tim_per_sim:.4g} |"]
+    if base is not None:
+        base_per_sim = base["wall_time_s"] / base["simulated_time_s"]
+        table.append(f"| thin_ice_sim CPU (baseline) | {base['cells']} cells | {base['time_step_s']:.3g} | "
+                     f"{round(base['simulated_time_s'] / base['time_step_s'])} | {base['simulated_time_s']:.4g} | "
+                     f"{base['wall_time_s']:.2f} | {base_per_sim:.4g} |")
     lines += ["## Side by side with 3-D DEM (LIGGGHTS 3.8)", "",
               f"The M-2 sheet ({s['length']} m x {s['width']} m, h = {s['diameter']} m) pushed at {s['velocity']} m/s",
               "against the 60-degree face between side walls, for the same simulated time on the same machine",
@@ -225,20 +236,31 @@ def dem_section(run, out, lines):
               f"{t['time_step_s']:.3g} s its ice's springs allow (critical step {t['critical_time_step_s']:.3g} s); the structure",
               f"contact (K_struct of Eq. 17; critical step {t['structure_critical_time_step_s']:.3g} s with it counted) is stepped",
               f"in {t['structure_substeps']} sub-step(s) for the cells that can reach the face (docs/model.md, Time stepping).", "",
-              f"Compiled code: thin_ice_sim's host code for {t.get('cpu_instruction_set', 'an unrecorded instruction set')} "
-              "(CMake's THIN_ICE_CPU_LEVEL); LIGGGHTS is Debian's package as shipped, built for the",
-              "x86-64 baseline (its library holds no AVX or FMA instruction). The 2026-12-01 run of this",
-              "benchmark, with thin_ice_sim also built for the baseline, gave a ratio of 9.0.", ""]
+              f"Compiled code: thin_ice_sim as this machine builds it, for {isa} (CMake's THIN_ICE_CPU_LEVEL),",
+              "and LIGGGHTS as Debian ships it, for the x86-64 baseline (its library holds no AVX or FMA",
+              "instruction)."]
+    if base is not None:
+        lines += ["Like for like, thin_ice_sim built for the baseline too (\"baseline\" above): "
+                  f"**{lig_per_sim / base_per_sim:.1f} times faster per simulated second**; the {isa} build is "
+                  f"{base_per_sim / tim_per_sim:.2f} times as fast as the baseline build in this window."]
+    lines += [""]
     lines += ["LIGGGHTS command: `" + s["command"] + "`", ""]
     fig, ax = plt.subplots(figsize=(6, 3.2))
-    names, values, colours = ["LIGGGHTS 3-D DEM", "thin_ice_sim CPU"], [lig_per_sim, tim_per_sim], ["tab:gray", "tab:blue"]
+    names, values, colours = ["LIGGGHTS 3-D DEM", f"thin_ice_sim CPU\n({isa})"], [lig_per_sim, tim_per_sim], ["tab:gray", "tab:blue"]
+    if base is not None:
+        names.insert(1, "thin_ice_sim CPU\n(baseline)")
+        values.insert(1, base_per_sim)
+        colours.insert(1, "tab:cyan")
     ax.barh(names, values, color=colours)
     for k, v in enumerate(values):
         ax.text(v, k, f" {v:.0f} s", va="center", fontsize=8)
     ax.set_xlim(min(values) / 3, max(values) * 3)
     ax.set_xscale("log")
     ax.set_xlabel("wall seconds per simulated second (log)")
-    ax.set_title(f"M-2 sheet, same machine and cores: ratio {lig_per_sim / tim_per_sim:.1f}")
+    title = f"M-2 sheet, same machine and cores: ratio {lig_per_sim / tim_per_sim:.1f}"
+    if base is not None:
+        title += f" ({isa} build),\n{lig_per_sim / base_per_sim:.1f} (baseline build, as LIGGGHTS's)"
+    ax.set_title(title, fontsize=10)
     fig.tight_layout()
     fig.savefig(os.path.join(out, "dem_comparison.png"), dpi=110)
     plt.close(fig)
