@@ -49,10 +49,24 @@ def summary_text(summary):
 
 
 def replace_files(contents):
-    """contents: {path: text}. Every file is written beside its old one first and then renamed
-    over it, so that a failure while writing leaves the old files as they were."""
-    for path, text in contents.items():
-        with open(path + ".new", "w", newline="") as f:
-            f.write(text)
+    """contents: {path: text}. Every file is written beside its old one first, flushed to disk,
+    and only then are they renamed over the old ones, so that a failure while writing leaves the
+    old files as they were and no .new file behind. (The renames themselves are not one atomic
+    step: a crash between two of them leaves some files new and some old.)"""
+    written = []
+    try:
+        for path, text in contents.items():
+            written.append(path + ".new")
+            with open(path + ".new", "w", newline="") as f:
+                f.write(text)
+                f.flush()
+                os.fsync(f.fileno())
+    except BaseException:
+        for new_path in written:
+            try:
+                os.remove(new_path)
+            except FileNotFoundError:
+                pass
+        raise
     for path in contents:
         os.replace(path + ".new", path)

@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """thin_ice_run's summary.json records the structure and false-bottom geometry the run used, with
-the run's --set overrides applied, so that readers of a run need not re-read the scenario file.
+the run's --set overrides applied, so that readers of a run need not re-read the scenario file,
+and the host instruction set the build was compiled for.
 
     test_run_summary.py THIN_ICE_RUN SOURCE_DIR
 """
@@ -31,9 +32,13 @@ def main():
             got = (summary.get(section) or {}).get(key)
             if got is None or abs(got - value) > 1e-12:
                 failures.append(f"{section}.{key} = {got}, expected {value}")
+        # The host instruction set of the build (CMake's THIN_ICE_CPU_LEVEL): "baseline" or a -march name.
+        level = summary.get("cpu_instruction_set")
+        if not isinstance(level, str) or not level or " " in level:
+            failures.append(f"cpu_instruction_set = {level!r}, expected 'baseline' or a -march name")
         if failures:
             sys.exit("FAIL: " + "; ".join(failures))
-        print("OK: structure and false bottom recorded with the overrides applied")
+        print(f"OK: structure and false bottom recorded with the overrides applied; built for {level}")
 
 
 if __name__ == "__main__":

@@ -94,9 +94,10 @@ SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : nh_(nh), private_nh_(private_nh), settings_(readNodeSettings(private_nh_)) {
   const Scenario scenario = loadScenario(settings_.scenario, settings_.overrides);
   sim_ = std::make_unique<Simulation>(scenario, parseBackendKind(settings_.backend, "~backend"));
-  ROS_INFO("thin_ice_sim: scenario %s (%d cells, dt %.3g s, critical %.3g s, structure contact in %d sub-steps), %s",
+  ROS_INFO("thin_ice_sim: scenario %s (%d cells, dt %.3g s, critical %.3g s, structure contact in %d sub-steps), %s, "
+           "CPU code built for %s",
            settings_.scenario.c_str(), sim_->cellCount(), sim_->timeStep(), sim_->criticalTimeStep(),
-           sim_->structureSubsteps(), sim_->backendNote().c_str());
+           sim_->structureSubsteps(), sim_->backendNote().c_str(), Simulation::cpuInstructionSet());
   if (settings_.start_paused) sim_->pause();
   applied_velocity_ = sim_->pusherVelocity();
 
