@@ -13,6 +13,8 @@ import subprocess
 import sys
 import tempfile
 
+from quick_strip import run_or_fail, strip_scenario
+
 
 def close(a, b):
     if isinstance(a, list) and isinstance(b, list):
@@ -27,13 +29,7 @@ def main():
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
         run = os.path.join(tmp, "run")
-        # quick.yaml cut to a 1 m strip 0.1 m from the structure: contact after ~0.27 s, bonds break.
-        cmd = [run_tool, "--scenario", os.path.join(source, "config/scenarios/quick.yaml"), "--until-time", "0.6",
-               "--set", "sheet.length=1.0", "--set", "structure.toe_x=1.1",
-               "--set", "bottom.distance_from_structure=0.5", "--out", run]
-        done = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=300)
-        if done.returncode != 0:
-            sys.exit(f"FAIL: thin_ice_run exit status {done.returncode}: {done.stderr.strip()}")
+        run_or_fail([run_tool] + strip_scenario(source) + ["--until-time", "0.6", "--out", run])
         path = os.path.join(run, "summary.json")
         original = json.load(open(path))
         if original["load"].get("first_failure_m") is None:

@@ -14,19 +14,15 @@ import subprocess
 import sys
 import tempfile
 
+from quick_strip import run_or_fail, strip_scenario
+
 STATISTICS = ("peak_N", "phase1_slope_N_per_m", "steady_mean_N", "steady_std_N")
 WINDOWS = ("peak_at_m", "first_failure_m", "steady_found", "steady_window_m", "steady_samples", "phase1_range_m")
 
 
 def run(run_tool, source, out, alpha):
-    # quick.yaml cut to a 1 m strip 0.1 m from the structure: contact after ~0.27 s, bonds break.
-    cmd = [run_tool, "--scenario", os.path.join(source, "config/scenarios/quick.yaml"), "--until-time", "0.6",
-           "--set", "sheet.length=1.0", "--set", "structure.toe_x=1.1",
-           "--set", "bottom.distance_from_structure=0.5", "--set", f"structure.calibration_factor={alpha}",
-           "--out", out]
-    done = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=300)
-    if done.returncode != 0:
-        sys.exit(f"FAIL: thin_ice_run exit status {done.returncode}: {done.stderr.strip()}")
+    run_or_fail([run_tool] + strip_scenario(source) +
+                ["--until-time", "0.6", "--set", f"structure.calibration_factor={alpha}", "--out", out])
 
 
 def rows(path):

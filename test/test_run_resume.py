@@ -14,6 +14,8 @@ import subprocess
 import sys
 import tempfile
 
+from quick_strip import strip_scenario
+
 
 def run(tool, args):
     return subprocess.run([tool] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=600)
@@ -21,10 +23,7 @@ def run(tool, args):
 
 def main():
     tool, source = sys.argv[1], sys.argv[2]
-    # quick.yaml cut to a 1 m strip that meets the structure at ~0.27 s and breaks bonds by 0.4 s.
-    scenario = ["--scenario", os.path.join(source, "config/scenarios/quick.yaml"), "--set", "sheet.length=1.0",
-                "--set", "structure.toe_x=1.1", "--set", "bottom.distance_from_structure=0.5",
-                "--output-interval", "0.02"]
+    scenario = strip_scenario(source) + ["--output-interval", "0.02"]
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
         whole, split, off_grid, early = (os.path.join(tmp, d) for d in ("whole", "split", "off_grid", "early"))
