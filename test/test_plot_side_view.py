@@ -1,0 +1,42 @@
+#!/usr/bin/python3
+"""scripts/plot_side_view draws a run's last snapshot (or a named one) and refuses bad input with
+one message naming it.
+
+    test_plot_side_view.py THIN_ICE_RUN SOURCE_DIR
+"""
+import os
+import subprocess
+import sys
+import tempfile
+
+from quick_strip import run_or_fail, strip_scenario
+
+
+def main():
+    run_tool, source = sys.argv[1], sys.argv[2]
+    script = os.path.join(source, "scripts", "plot_side_view")
+    failures = []
+    with tempfile.TemporaryDirectory() as tmp:
+        run = os.path.join(tmp, "run")
+        run_or_fail([run_tool] + strip_scenario(source) + ["--until-time", "0.4", "--snapshots", "2", "--out", run])
+        out = os.path.join(tmp, "side.png")
+        done = run_or_fail([script, run, out], "plot_side_view")
+        # The strip has 1 m x 1 m of 0.2 m cells in quick.yaml; its last snapshot is at t = 0.4 s.
+        if not os.path.getsize(out) > 10000:
+            failures.append(f"{out} is {os.path.getsize(out)} bytes")
+        if "L = " not in done.stdout or "cells drawn" not in done.stdout:
+            failures.append(f"unexpected report: {done.stdout.strip()!r}")
+        for args, needle in (([run, out, "--snapshot", "cells_999999.csv"], "cells_999999.csv"),
+                             ([run, out, "--reach", "-1"], "--reach -1")):
+            bad = subprocess.run([script] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                                 timeout=120)
+            lines = bad.stderr.strip().splitlines()
+            if bad.returncode == 0 or len(lines) != 1 or needle not in lines[0]:
+                failures.append(f"{args[2:]}: exit status {bad.returncode}, stderr {bad.stderr.strip()!r}")
+    if failures:
+        sys.exit("FAIL: " + "; ".join(failures))
+    print("OK: plot_side_view draws the last snapshot and names bad input in one line")
+
+
+if __name__ == "__main__":
+    main()
