@@ -432,10 +432,15 @@ def main():
     for name in shown:
         if profile_plot(a.runs, name, runs[name]):
             pile += [f"### {name}", "", f"![{name} rubble profiles]({rel}/{name}/profiles.png)", ""]
+            # The ice under the water too, where a side view was drawn (scripts/plot_side_view).
+            if os.path.exists(os.path.join(a.runs, name, "side_view.png")):
+                pile += [f"![{name} cells near the structure, from the side and from above]({rel}/{name}/side_view.png)", ""]
     lines += ["## Rubble pile profiles", ""]
     lines += (["The ice above the waterline at the end of each run: strong ice (S-1, S-2), as the paper's",
                "Fig. 15 asks, and the longest run of each ice type. Heights are cell tops (z + h/2; cells do not",
                "tilt in this 2.5-D model); the top view bins by cell centroid, so it is good to about a cell radius.",
+               "Where a run has a side view (scripts/plot_side_view, from its last snapshot), it shows every cell",
+               "near the structure, under the waterline as well.",
                ""] + pile if pile else ["No run with profiles.csv yet."])
     lines.append("")
 
