@@ -185,6 +185,15 @@ def window_text(run, sim_time):
                                                    ", but no failure of the sheet yet."))
 
 
+def liggghts_build_text(vector_instructions):
+    """What objdump found in LIGGGHTS's library (scripts/bench counts AVX and FMA instructions)."""
+    if vector_instructions is None:
+        return "its instruction set was not checked (no objdump, or no library found)"
+    if vector_instructions == 0:
+        return "built for the x86-64 baseline (objdump finds no AVX or FMA instruction in its library)"
+    return f"its library holds {vector_instructions} AVX or FMA instructions"
+
+
 def dem_section(run, out, lines):
     log, setup, tim = (os.path.join(run, p) for p in ("liggghts.log", "liggghts.json", "tim_dem/summary.json"))
     if not (os.path.exists(log) and os.path.exists(setup) and os.path.exists(tim)):
@@ -237,8 +246,7 @@ def dem_section(run, out, lines):
               f"contact (K_struct of Eq. 17; critical step {t['structure_critical_time_step_s']:.3g} s with it counted) is stepped",
               f"in {t['structure_substeps']} sub-step(s) for the cells that can reach the face (docs/model.md, Time stepping).", "",
               f"Compiled code: thin_ice_sim as this machine builds it, for {isa} (CMake's THIN_ICE_CPU_LEVEL),",
-              "and LIGGGHTS as Debian ships it, for the x86-64 baseline (its library holds no AVX or FMA",
-              "instruction)."]
+              "and LIGGGHTS as Debian ships it: " + liggghts_build_text(s.get("avx_or_fma_instructions")) + "."]
     if base is not None:
         lines += ["Like for like, thin_ice_sim built for the baseline too (\"baseline\" above): "
                   f"**{lig_per_sim / base_per_sim:.1f} times faster per simulated second**; the {isa} build is "
