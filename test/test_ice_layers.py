@@ -1,0 +1,82 @@
+#!/usr/bin/python3
+"""scripts/ice_layers counts the cells under and over the sheet's level in a hand-made run folder
+whose answer is worked out below, applies the run's --set overrides, and names bad input in one line.
+
+    test_ice_layers.py SOURCE_DIR
+"""
+import csv
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+# Ice of h = 0.1 m, rho_i = 900 kg/m^3 on water of 1000 kg/m^3: draft 0.09 m, so a cell at rest has
+# its centroid at z_rest = 0.05 - 0.09 = -0.04 m; below: z < -0.09 m, above: z > +0.01 m.
+# With the override ice.thickness=0.2 instead: z_rest = 0.1 - 0.18 = -0.08 m; below: z < -0.18 m,
+# above: z > +0.02 m.
+SCENARIO = "ice:\n  thickness: 0.1\n  density: 900\nwater:\n  density: 1000\n"
+TOE_X = 10.0
+# (x [m], z [m], bonded)
+CELLS = [(5.0, -0.04, True),    # at rest: neither
+         (9.0, -0.10, False),   # below for h = 0.1 only (-0.10 > -0.18), 1.0 m from the toe, free
+         (7.5, -0.20, True),    # below for both, 2.5 m from the toe
+         (9.8, 0.015, False),   # above for h = 0.1 only (0.015 < 0.02), free
+         (9.9, 0.05, True),     # above for both
+         (6.0, -0.085, True)]   # neither for h = 0.1 (-0.085 > -0.09)
+EXPECTED_ROW = "| 0.500 | 2 | 2 | 2 | 2.50 |"
+EXPECTED_ROW_THICK = "| 0.500 | 1 | 1 | 2 | 2.50 |"
+
+
+def make_run(folder, overrides):
+    os.makedirs(os.path.join(folder, "snapshots"))
+    scenario = os.path.join(folder, "scenario.yaml")
+    with open(scenario, "w") as f:
+        f.write(SCENARIO)
+    with open(os.path.join(folder, "summary.json"), "w") as f:
+        json.dump({"scenario": {"name": "hand", "file": scenario, "overrides": overrides},
+                   "structure": {"toe_x_m": TOE_X}}, f)
+    with open(os.path.join(folder, "snapshots", "index.csv"), "w") as f:
+        f.write("file,time_s,pushed_length_m\ncells_000010.csv,10,0.5\n")
+    with open(os.path.join(folder, "snapshots", "cells_000010.csv"), "w", newline="") as f:
+        w = csv.writer(f)
+        w.writerow(["cell", "x_m", "y_m", "z_m", "yaw_rad", "in_intact_sheet", "polygon_xy_m"])
+        for k, (x, z, bonded) in enumerate(CELLS):
+            w.writerow([k, x, 0.0, z, 0.0, 1 if bonded else 0, ""])
+
+
+def run(script, args):
+    return subprocess.run([script] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
+
+
+def main():
+    script = os.path.join(sys.argv[1], "scripts", "ice_layers")
+    failures = []
+    with tempfile.TemporaryDirectory() as tmp:
+        for name, overrides, expected in (("plain", [], EXPECTED_ROW),
+                                          ("thick", ["ice.thickness=0.2", "ice.smoothing_exponent_h=1"],
+                                           EXPECTED_ROW_THICK)):
+            folder = os.path.join(tmp, name)
+            make_run(folder, overrides)
+            out_csv = os.path.join(tmp, name + ".csv")
+            done = run(script, [folder, "--csv", out_csv])
+            if done.returncode != 0 or expected not in done.stdout.splitlines():
+                failures.append(f"{name}: exit status {done.returncode}, expected row {expected!r} in {done.stdout!r}"
+                                f" (stderr {done.stderr.strip()!r})")
+            elif not os.path.exists(out_csv) or len(open(out_csv).read().splitlines()) != 2:
+                failures.append(f"{name}: --csv did not write a header and one row")
+        bad = os.path.join(tmp, "bad")
+        make_run(bad, ["water.density=800"])  # lighter than the ice: nothing floats
+        for args, needle in (([os.path.join(tmp, "none")], "not a finished run"),
+                             ([bad], "water.density 800")):
+            done = run(script, args)
+            lines = done.stderr.strip().splitlines()
+            if done.returncode == 0 or len(lines) != 1 or needle not in lines[0]:
+                failures.append(f"{args}: exit status {done.returncode}, stderr {done.stderr.strip()!r}")
+    if failures:
+        sys.exit("FAIL: " + "; ".join(failures))
+    print("OK: ice_layers counts the cells under and over the sheet's level as worked out by hand")
+
+
+if __name__ == "__main__":
+    main()
