@@ -1,6 +1,7 @@
 #!/usr/bin/python3
 """scripts/ice_layers counts the cells under and over the sheet's level in a hand-made run folder
-whose answer is worked out below, applies the run's --set overrides, and names bad input in one line.
+whose answer is worked out below, applies the run's --set overrides, tables and draws two runs
+together, and names bad input in one line.
 
     test_ice_layers.py SOURCE_DIR
 """
@@ -38,6 +39,8 @@ def make_run(folder, overrides):
                    "structure": {"toe_x_m": TOE_X}}, f)
     with open(os.path.join(folder, "snapshots", "index.csv"), "w") as f:
         f.write("file,time_s,pushed_length_m\ncells_000010.csv,10,0.5\n")
+    with open(os.path.join(folder, "loads.csv"), "w") as f:
+        f.write("time_s,pushed_length_m,horizontal_calibrated_N\n5,0.25,100\n10,0.5,300\n")
     with open(os.path.join(folder, "snapshots", "cells_000010.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["cell", "x_m", "y_m", "z_m", "yaw_rad", "in_intact_sheet", "polygon_xy_m"])
@@ -65,6 +68,17 @@ def main():
                                 f" (stderr {done.stderr.strip()!r})")
             elif not os.path.exists(out_csv) or len(open(out_csv).read().splitlines()) != 2:
                 failures.append(f"{name}: --csv did not write a header and one row")
+        # Both runs at once: one CSV row per run and snapshot, and the comparison plot.
+        both_csv, png = os.path.join(tmp, "both.csv"), os.path.join(tmp, "both.png")
+        done = run(script, [os.path.join(tmp, "plain"), os.path.join(tmp, "thick"), "--csv", both_csv, "--plot", png])
+        if done.returncode != 0:
+            failures.append(f"two runs: exit status {done.returncode}, stderr {done.stderr.strip()!r}")
+        else:
+            lines = open(both_csv).read().splitlines()
+            if len(lines) != 3 or not lines[1].startswith("plain,0.5000,2,2,2,") or not lines[2].startswith("thick,0.5000,1,1,2,"):
+                failures.append(f"two runs: CSV {lines}")
+            if not os.path.exists(png) or os.path.getsize(png) < 10000:
+                failures.append("two runs: --plot wrote no picture")
         bad = os.path.join(tmp, "bad")
         make_run(bad, ["water.density=800"])  # lighter than the ice: nothing floats
         for args, needle in (([os.path.join(tmp, "none")], "not a finished run"),
