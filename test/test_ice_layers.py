@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """scripts/ice_layers counts the cells under and over the sheet's level in a hand-made run folder
-whose answer is worked out below, applies the run's --set overrides, tables and draws two runs
+whose answer is worked out below (the sheet told apart from the broken ice by its bonded piece), applies the run's --set overrides, tables and draws two runs
 together, and names bad input in one line.
 
     test_ice_layers.py SOURCE_DIR
@@ -18,18 +18,22 @@ import tempfile
 # above: z > +0.02 m.
 SCENARIO = "ice:\n  thickness: 0.1\n  density: 900\nwater:\n  density: 1000\n"
 TOE_X = 10.0
-# (x [m], z [m], bonded)
-CELLS = [(5.0, -0.04, True),    # at rest: neither
-         (9.0, -0.10, False),   # below for h = 0.1 only (-0.10 > -0.18), 1.0 m from the toe, free
-         (7.5, -0.20, True),    # below for both, 2.5 m from the toe
-         (9.8, 0.015, False),   # above for h = 0.1 only (0.015 < 0.02), free
-         (9.9, 0.05, True),     # above for both
-         (6.0, -0.085, True)]   # neither for h = 0.1 (-0.085 > -0.09)
-EXPECTED_ROW = "| 0.500 | 2 | 2 | 2 | 2.50 |"
-EXPECTED_ROW_THICK = "| 0.500 | 1 | 1 | 2 | 2.50 |"
+# (x [m], z [m], bonded, cells in its bonded piece). The sheet is the largest piece: cells 0, 5, 6.
+CELLS = [(5.0, -0.04, True, 3),    # the sheet at rest: neither
+         (9.0, -0.10, False, 1),   # broken, below for h = 0.1 only (-0.10 > -0.18), 1.0 m from the toe, free
+         (7.5, -0.20, True, 2),    # broken (a floe of 2), below for both, 2.5 m from the toe
+         (9.8, 0.015, False, 1),   # broken, above for h = 0.1 only (0.015 < 0.02), free
+         (9.9, 0.05, True, 2),     # broken (the floe's other cell), above for both
+         (6.0, -0.085, True, 3),   # the sheet, neither for h = 0.1 (-0.085 > -0.09)
+         (8.0, -0.095, True, 3)]   # the sheet, pressed down for h = 0.1 only, 2.0 m from the toe
+# h = 0.1: below 1, 2, 6 (one the sheet's); above 3, 4; free 1, 3; sheet 3 cells; farthest broken
+# below 2.5 m (cell 6 at 2.0 m is the sheet's). The "thick" run's snapshot is written without
+# piece_cells, as before 2026-12-02: below 2 only, above 4 only, the sheet unknown, farthest 2.5 m.
+EXPECTED_ROW = "| 0.500 | 3 | 1 | 2 | 0 | 2 | 3 | 2.50 |"
+EXPECTED_ROW_THICK = "| 0.500 | 1 | - | 1 | - | 2 | - | 2.50 |"
 
 
-def make_run(folder, overrides):
+def make_run(folder, overrides, with_pieces=True):
     os.makedirs(os.path.join(folder, "snapshots"))
     scenario = os.path.join(folder, "scenario.yaml")
     with open(scenario, "w") as f:
@@ -43,9 +47,10 @@ def make_run(folder, overrides):
         f.write("time_s,pushed_length_m,horizontal_calibrated_N\n5,0.25,100\n10,0.5,300\n")
     with open(os.path.join(folder, "snapshots", "cells_000010.csv"), "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["cell", "x_m", "y_m", "z_m", "yaw_rad", "in_intact_sheet", "polygon_xy_m"])
-        for k, (x, z, bonded) in enumerate(CELLS):
-            w.writerow([k, x, 0.0, z, 0.0, 1 if bonded else 0, ""])
+        w.writerow(["cell", "x_m", "y_m", "z_m", "yaw_rad", "in_intact_sheet"] + (["piece_cells"] if with_pieces else [])
+                   + ["polygon_xy_m"])
+        for k, (x, z, bonded, piece) in enumerate(CELLS):
+            w.writerow([k, x, 0.0, z, 0.0, 1 if bonded else 0] + ([piece] if with_pieces else []) + [""])
 
 
 def run(script, args):
@@ -60,7 +65,7 @@ def main():
                                           ("thick", ["ice.thickness=0.2", "ice.smoothing_exponent_h=1"],
                                            EXPECTED_ROW_THICK)):
             folder = os.path.join(tmp, name)
-            make_run(folder, overrides)
+            make_run(folder, overrides, with_pieces=name == "plain")
             out_csv = os.path.join(tmp, name + ".csv")
             done = run(script, [folder, "--csv", out_csv])
             if done.returncode != 0 or expected not in done.stdout.splitlines():
@@ -75,7 +80,7 @@ def main():
             failures.append(f"two runs: exit status {done.returncode}, stderr {done.stderr.strip()!r}")
         else:
             lines = open(both_csv).read().splitlines()
-            if len(lines) != 3 or not lines[1].startswith("plain,0.5000,2,2,2,") or not lines[2].startswith("thick,0.5000,1,1,2,"):
+            if lines[1:] != ["plain,0.5000,3,1,2,0,2,3,2.500", "thick,0.5000,1,,1,,2,,2.500"]:
                 failures.append(f"two runs: CSV {lines}")
             if not os.path.exists(png) or os.path.getsize(png) < 10000:
                 failures.append("two runs: --plot wrote no picture")

@@ -3,6 +3,7 @@
 // exercise a backend run on the CPU and on the GPU (skipped, with the reason, where none is).
 #include <gtest/gtest.h>
 
+#include <map>
 #include <string>
 #include <vector>
 
@@ -116,6 +117,36 @@ void expectRefused(const std::vector<std::string>& overrides, const std::vector<
     const std::string what = e.what();
     for (const std::string& part : parts) EXPECT_NE(what.find(part), std::string::npos) << what;
   }
+}
+
+TEST(Simulation, BondedPiecesAreTheComponentsOfTheIntactBonds) {
+  // Six cells; bonds 0-1 intact, 1-2 broken, 2-3 intact, 3-4 breaking in this step (counts as
+  // broken), 4-2 intact, and cell 5 has no bond: pieces {0, 1}, {2, 3, 4} and {5}.
+  const std::vector<int> bond_i = {0, 1, 2, 3, 4}, bond_j = {1, 2, 3, 4, 2};
+  const std::vector<unsigned char> state = {kBondIntact, kBondBroken, kBondIntact, kBondBreaking, kBondIntact};
+  EXPECT_EQ(bondedPieceSizes(6, bond_i, bond_j, state), (std::vector<int>{2, 2, 3, 3, 3, 1}));
+  // Every bond intact: one piece of six less the lone cell 5.
+  EXPECT_EQ(bondedPieceSizes(6, bond_i, bond_j, std::vector<unsigned char>(5, kBondIntact)),
+            (std::vector<int>{5, 5, 5, 5, 5, 1}));
+}
+
+TEST_P(EveryBackend, SnapshotsGiveTheSheetAsOnePieceAndFreeBlocksAsOne) {
+  // At rest the strip is one bonded piece; after its front has broken against the structure the
+  // pieces still add up to every cell, in_intact_sheet is "piece of more than one", and the
+  // largest piece is still the pushed sheet.
+  Simulation sim(shortStrip(0), GetParam());
+  const std::vector<CellSnapshot> start = sim.cells();
+  for (const CellSnapshot& c : start) ASSERT_EQ(c.piece_cells, static_cast<int>(start.size()));
+  while (sim.loads().broken_bonds < 10 && sim.time() < 3.0 && sim.healthy()) sim.advance(0.05);
+  ASSERT_GE(sim.loads().broken_bonds, 10);
+  const std::vector<CellSnapshot> cells = sim.cells();
+  std::map<int, int> cells_per_size;
+  for (const CellSnapshot& c : cells) {
+    EXPECT_EQ(c.in_intact_sheet, c.piece_cells > 1);
+    ++cells_per_size[c.piece_cells];
+  }
+  for (const auto& [size, count] : cells_per_size) EXPECT_EQ(count % size, 0) << "pieces of " << size << " cells";
+  EXPECT_GT(cells_per_size.rbegin()->first, static_cast<int>(cells.size()) / 2);
 }
 
 TEST(Simulation, UnstableTimeStepIsRefusedWithTheCriticalStep) {

@@ -68,6 +68,12 @@ class Backend {
 std::vector<CellSnapshot> makeCellSnapshots(const Model& model, const std::vector<CellMotion>& motion,
                                             const std::vector<unsigned char>& bond_broken);
 
+/// For each of `cell_count` cells, the number of cells in its piece: the connected component of
+/// the graph whose edges are the intact bonds (bond b joins bond_i[b] and bond_j[b]; bond_broken[b]
+/// other than kBondIntact removes it). A free block has 1.
+std::vector<int> bondedPieceSizes(int cell_count, const std::vector<int>& bond_i, const std::vector<int>& bond_j,
+                                  const std::vector<unsigned char>& bond_broken);
+
 /// How Simulation reaches the GPU backend without the core depending on CUDA: a build with the
 /// CUDA library registers this provider (thin_ice_sim/built_backends.hpp); without it there is none.
 struct GpuBackendProvider {

@@ -47,6 +47,8 @@ struct CellSnapshot {
   double x, y, z, yaw;     ///< [m], [m], [m], [rad]
   double vx, vy, vz, wz;   ///< [m/s], [rad/s]
   bool in_intact_sheet;    ///< still bonded to at least one neighbour
+  int piece_cells;         ///< cells in the piece held together by intact bonds that this cell
+                           ///< belongs to: 1 for a free block; the pushed sheet is the largest
 };
 
 class Backend;

@@ -160,6 +160,8 @@ std::vector<CellSnapshot> readCellSnapshot(const std::string& path) {
     c.z = csvNumber(row, "z_m", path);
     c.yaw = csvNumber(row, "yaw_rad", path);
     c.in_intact_sheet = csvNumber(row, "in_intact_sheet", path) != 0.0;
+    // Snapshots written before 2026-12-02 have no piece_cells: 0 there means "not recorded".
+    c.piece_cells = row.count("piece_cells") ? static_cast<int>(csvNumber(row, "piece_cells", path)) : 0;
     cells.push_back(c);
   }
   return cells;

@@ -17,16 +17,34 @@ BackendKind parseBackendKind(const std::string& text, const std::string& key) {
   throw std::invalid_argument(key + " = '" + text + "': allowed values are 'cpu', 'cuda' and 'auto'");
 }
 
+std::vector<int> bondedPieceSizes(int cell_count, const std::vector<int>& bond_i, const std::vector<int>& bond_j,
+                                  const std::vector<unsigned char>& bond_broken) {
+  // Union-find with path halving; each piece is named by its root cell.
+  std::vector<int> parent(cell_count);
+  for (int k = 0; k < cell_count; ++k) parent[k] = k;
+  auto root = [&parent](int k) {
+    while (parent[k] != k) k = parent[k] = parent[parent[k]];
+    return k;
+  };
+  for (size_t b = 0; b < bond_broken.size(); ++b) {
+    if (bond_broken[b] != kBondIntact) continue;
+    const int a = root(bond_i[b]), c = root(bond_j[b]);
+    if (a != c) parent[a < c ? c : a] = a < c ? a : c;
+  }
+  std::vector<int> size(cell_count, 0);
+  for (int k = 0; k < cell_count; ++k) ++size[root(k)];
+  std::vector<int> out(cell_count);
+  for (int k = 0; k < cell_count; ++k) out[k] = size[root(k)];
+  return out;
+}
+
 std::vector<CellSnapshot> makeCellSnapshots(const Model& model, const std::vector<CellMotion>& motion,
                                             const std::vector<unsigned char>& bond_broken) {
-  std::vector<unsigned char> bonded(model.cell_count, 0);
-  for (size_t b = 0; b < bond_broken.size(); ++b) {
-    if (!bond_broken[b]) bonded[model.bond_i[b]] = bonded[model.bond_j[b]] = 1;
-  }
+  const std::vector<int> piece = bondedPieceSizes(model.cell_count, model.bond_i, model.bond_j, bond_broken);
   std::vector<CellSnapshot> out(model.cell_count);
   for (int k = 0; k < model.cell_count; ++k) {
     const CellMotion& m = motion[k];
-    out[k] = {m.x, m.y, m.z, m.yaw, m.vx, m.vy, m.vz, m.wz, bonded[k] != 0};
+    out[k] = {m.x, m.y, m.z, m.yaw, m.vx, m.vy, m.vz, m.wz, piece[k] > 1, piece[k]};
   }
   return out;
 }

@@ -189,16 +189,17 @@ std::string loadsRow(const LoadSample& s, std::size_t panels) {
   return row + "\n";
 }
 
-/// One CSV per snapshot: cell pose and its world polygon as "x0 y0 x1 y1 ..." [m] in one field.
+/// One CSV per snapshot: cell pose, whether it is bonded, the size of its bonded piece (cells) and
+/// its world polygon as "x0 y0 x1 y1 ..." [m] in one field.
 void writeSnapshot(const Simulation& sim, const std::string& dir, long row) {
   const std::vector<thin_ice::CellSnapshot> cells = sim.cells();
   std::ostringstream text;
   text.precision(9);
-  text << "cell,x_m,y_m,z_m,yaw_rad,in_intact_sheet,polygon_xy_m\n";
+  text << "cell,x_m,y_m,z_m,yaw_rad,in_intact_sheet,piece_cells,polygon_xy_m\n";
   for (std::size_t k = 0; k < cells.size(); ++k) {
     const thin_ice::CellSnapshot& c = cells[k];
     text << k << ',' << c.x << ',' << c.y << ',' << c.z << ',' << c.yaw << ','
-         << (c.in_intact_sheet ? 1 : 0) << ',';
+         << (c.in_intact_sheet ? 1 : 0) << ',' << c.piece_cells << ',';
     const std::vector<thin_ice::Vec2> polygon = sim.cellPolygon(static_cast<int>(k), c);
     for (std::size_t v = 0; v < polygon.size(); ++v) text << (v ? " " : "") << polygon[v].x << ' ' << polygon[v].y;
     text << '\n';
