@@ -93,6 +93,20 @@ TEST(Contact, VerticalForceIsEquation3) {
   EXPECT_NEAR(f.force_on_j.x, 0.6 * 9e8 / 0.7 * 0.03 * 1e-3, 1e-6 * 23142.9);
 }
 
+TEST(Contact, HorizontalAndVerticalExponentsActApart) {
+  // As above with n = 2 for K_n and n = 1 for K_v: K_n = 0.6^2 = 0.36, K_v = 0.6, so
+  // F_n = 0.36 (9e8/0.7) 0.03 1e-3 = 13885.7 N and F_v = 92571.4 N as before.
+  const auto a = square({0.0, 0.0}, 0.2), b = square({0.199, 0.0}, 0.2);
+  const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
+  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const BodyState j = {{0.199, 0.0}, 0.02, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  ContactConstants c = iceContact();
+  c.exponent_h = 2.0;
+  const PairForce f = demContactForce(o, i, j, c, kNoReference);
+  EXPECT_NEAR(f.fz_on_j, 0.6 * 0.03 * 9e8 / 0.7 * 2e-4 / 0.05, 1e-6 * 92571.4);
+  EXPECT_NEAR(f.force_on_j.x, 0.36 * 9e8 / 0.7 * 0.03 * 1e-3, 1e-6 * 13885.7);
+}
+
 TEST(Contact, EqualAndOppositeWhicheverOrder) {
   const auto a = square({0.0, 0.0}, 0.2), b = square({0.15, 0.05}, 0.2);
   const BodyState i = {{0.0, 0.0}, 0.001, {0.1, 0.02}, 0.0, 0.3, 1.84, kSquareInertia};
@@ -286,6 +300,28 @@ TEST(Bond, VerticalOffsetBreaksAtEquation13WithAndWithoutCompression) {
     const BondForce f = rmibBondForce(b, i, kNoTurn, j, kNoTurn, bondLaw(0.5));
     EXPECT_NEAR(f.sigma_c, 40e3, 1e-6 * 40e3);
     EXPECT_EQ(f.breaks, factor > 1.0) << "factor " << factor;
+  }
+}
+
+TEST(Bond, SpringsAndDampingFollowTheirOwnSmoothingExponents) {
+  // j 0.02 m higher (z = 0.4 of h = 0.05 m), pulled 1e-5 m along x, moving at 0.01 m/s along x
+  // and 0.02 m/s up; damping D = 100 N s/m on each spring. K_2(0.4) = 0.36, K_1(0.4) = 0.6;
+  // the elastic force scales with K, the damping with sqrt(K):
+  //   F_x on j = -(K_n k_n 1e-5 + sqrt(K_n) D 0.01),  F_z on j = -(K_v k_v 0.02 + sqrt(K_v) D 0.02).
+  BondRest b = unitBond();
+  b.damping_normal = b.damping_vertical = 100.0;
+  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const BodyState j = {{0.2 + 1e-5, 0.0}, 0.02, {0.01, 0}, 0.02, 0.0, 1.84, kSquareInertia};
+  struct Case { double n_h, n_v, k_n, k_v; };
+  for (const Case& e : {Case{2.0, 1.0, 0.36, 0.6}, Case{1.0, 2.0, 0.6, 0.36}, Case{2.0, 2.0, 0.36, 0.36}}) {
+    BondConstants law = bondLaw(0.0);
+    law.exponent_h = e.n_h;
+    law.exponent_v = e.n_v;
+    const BondForce f = rmibBondForce(b, i, kNoTurn, j, kNoTurn, law);
+    const double fx = -(e.k_n * b.k_normal * 1e-5 + std::sqrt(e.k_n) * 100.0 * 0.01);
+    const double fz = -(e.k_v * b.k_vertical * 0.02 + std::sqrt(e.k_v) * 100.0 * 0.02);
+    EXPECT_NEAR(f.force_on_j.x, fx, 1e-9 * std::fabs(fx)) << "n_h " << e.n_h << ", n_v " << e.n_v;
+    EXPECT_NEAR(f.fz_on_j, fz, 1e-9 * std::fabs(fz)) << "n_h " << e.n_h << ", n_v " << e.n_v;
   }
 }
 

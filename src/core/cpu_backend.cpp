@@ -42,6 +42,7 @@ class CpuBackend final : public Backend {
     box_.resize(static_cast<size_t>(n) * 4);
     structure_.resize(n);
     pusher_fx_.resize(n);
+    loaded_.assign(n, 0);
     bond_load_.resize(model_.bond_rest.size());
     bond_incidence_.build(n, model_.bond_i, model_.bond_j);
     reset();
@@ -280,6 +281,7 @@ class CpuBackend final : public Backend {
       const CellStepResult r =
           stepCell(k, c, in, pusher_x_, pusher_velocity, kRunawaySpeed, reference_[k], motion_[k], structure_[k]);
       pusher_fx_[k] = r.pusher_fx;
+      loaded_[k] = r.pusher_fx != 0.0 || structure_[k].panel_count > 0;
       blown = blown || r.blown;
       moved_far = moved_far || r.moved_far;
     }
@@ -287,8 +289,11 @@ class CpuBackend final : public Backend {
     // Bonds broken in this step have applied their last force: they stop here.
     for (int b : just_broken_) bond_state_[b] = kBondBroken;
     just_broken_.clear();
-    // Loads, summed in cell order (deterministic).
+    // Loads, summed in cell order (deterministic). Only the few cells at the pusher or the face
+    // add anything (adding zero changes no sum); a byte per cell says which, so this serial loop
+    // does not read every cell's 200-byte StructureContact.
     for (int k = 0; k < n; ++k) {
+      if (!loaded_[k]) continue;
       sum.pusher_force += pusher_fx_[k];
       const StructureContact& s = structure_[k];
       for (int slot = 0; slot < s.panel_count; ++slot) {
@@ -327,6 +332,7 @@ class CpuBackend final : public Backend {
   std::vector<double> box_;               ///< (cells x 4) x0 x1 y0 y1 [m]
   std::vector<StructureContact> structure_;
   std::vector<double> pusher_fx_;         ///< (cells) [N]
+  std::vector<unsigned char> loaded_;     ///< (cells) 1: the pusher or the structure acts on it this step
   std::vector<unsigned char> bond_state_;  ///< (bonds) BondState
   std::vector<PairLoad> bond_load_;
   Incidence bond_incidence_, contact_incidence_;

@@ -135,8 +135,12 @@ TIS_HD BondForce rmibBondForce(const BondRest& b, const BodyState& i, Vec2 turn_
   const Vec2 u_s = du - u_n * n;                                              // Eq. (10)
 
   const double offset = fabs(dz) / c.thickness;
+  // Every ice type of Table 1 has one exponent for both: K_v and its root are then K_n's (hot loop).
+  const bool same_exponent = c.exponent_v == c.exponent_h;
   const double k_h = smoothing(offset, c.exponent_h);
-  const double k_v = smoothing(offset, c.exponent_v);
+  const double k_v = same_exponent ? k_h : smoothing(offset, c.exponent_v);
+  const double root_k_h = k_h == 1.0 ? 1.0 : sqrt(k_h);  // the damping scales with sqrt(K)
+  const double root_k_v = same_exponent ? root_k_h : (k_v == 1.0 ? 1.0 : sqrt(k_v));
   const double elastic_h = k_h * b.k_normal * u_n;                            // Eqs. (11)-(12)
   const Vec2 elastic_s = b.k_shear * u_s;
   const double elastic_v = k_v * b.k_vertical * dz;
@@ -145,9 +149,9 @@ TIS_HD BondForce rmibBondForce(const BondRest& b, const BodyState& i, Vec2 turn_
   const Vec2 w = (j.velocity + j.wz * perpendicular(f.arm_j)) - (i.velocity + i.wz * perpendicular(f.arm_i));
   const double w_n = dot(w, n);
   const Vec2 w_s = w - w_n * n;
-  const double damping_h = (k_h == 1.0 ? 1.0 : sqrt(k_h)) * b.damping_normal * w_n;
+  const double damping_h = root_k_h * b.damping_normal * w_n;
   const Vec2 damping_s = b.damping_shear * w_s;
-  const double damping_v = (k_v == 1.0 ? 1.0 : sqrt(k_v)) * b.damping_vertical * (j.vz - i.vz);
+  const double damping_v = root_k_v * b.damping_vertical * (j.vz - i.vz);
 
   // The bond pulls j back towards i: force on j opposes the displacement.
   f.force_on_j = -((elastic_h + damping_h) * n + elastic_s + damping_s);
@@ -155,7 +159,7 @@ TIS_HD BondForce rmibBondForce(const BondRest& b, const BodyState& i, Vec2 turn_
 
   const double section = c.thickness * b.edge_length;                        // Eq. (13)
   f.sigma_h = elastic_h / section;
-  f.sigma_c = elastic_h < 0.0 ? -elastic_h / section : 0.0;
+  f.sigma_c = elastic_h < 0.0 ? -f.sigma_h : 0.0;  // the same quotient, negated exactly
   f.sigma_v = verticalBondStress(elastic_v, b, c);
   f.breaks = bondFails(f.sigma_h, f.sigma_v, f.sigma_c, dz, c);
   return f;

@@ -109,7 +109,7 @@ TIS_HD PairForce demContactForce(const PolygonOverlap& overlap, const BodyState&
   const double dz = j.z - i.z;
   const double offset = fabs(dz) / h;
   const double k_h = smoothing(offset, c.exponent_h);
-  const double k_v = smoothing(offset, c.exponent_v);
+  const double k_v = c.exponent_v == c.exponent_h ? k_h : smoothing(offset, c.exponent_v);
   const double reduced_mass = i.mass * j.mass / (i.mass + j.mass);
 
   const Vec2 relative = pointVelocity(j, overlap.centroid) - pointVelocity(i, overlap.centroid);
