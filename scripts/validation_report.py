@@ -444,6 +444,17 @@ def main():
                ""] + pile if pile else ["No run with profiles.csv yet."])
     lines.append("")
 
+    # Where the broken ice went, counted per snapshot (scripts/ice_layers --plot / --csv).
+    layer_plots = sorted(n for n in os.listdir(a.runs) if re.fullmatch(r"layers_[\w-]+\.png", n))
+    if layer_plots:
+        numbers = (f"; the numbers are in [layers.csv]({rel}/layers.csv)"
+                   if os.path.exists(os.path.join(a.runs, "layers.csv")) else "")
+        lines += ["## Where the broken ice goes: under or over the sheet", "",
+                  "Per snapshot, the broken ice more than h/2 under and over the sheet's floating level and the",
+                  "sheet's own cells pressed down (the sheet: the largest piece held together by intact bonds),",
+                  f"drawn by scripts/ice_layers{numbers}. The runs and what they show: the calibration notes below.", ""]
+        lines += [f"![{n[:-4]}]({rel}/{n})" for n in layer_plots] + [""]
+
     calibration = os.path.join(a.runs, "calibration.md")
     if os.path.exists(calibration):
         with open(calibration) as f:
