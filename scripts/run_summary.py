@@ -1,6 +1,7 @@
-"""Writing a thin_ice_run summary.json again from Python (scripts/recalibrate, scripts/reanalyse):
-the load statistics from thin_ice_analyse (the C++ code thin_ice_run uses), one layout, and files
-replaced only when whole."""
+"""A thin_ice_run summary.json from Python: written again (scripts/recalibrate, scripts/reanalyse;
+the load statistics from thin_ice_analyse, the C++ code thin_ice_run uses, one layout, and files
+replaced only when whole), and the scenario it names read back with the run's overrides
+(scripts/validation_report.py, scripts/ice_layers)."""
 import json
 import os
 import subprocess
@@ -30,6 +31,27 @@ def analyse(tool, run_dir):
     if done.returncode != 0:
         raise RuntimeError(done.stderr.strip() or f"thin_ice_analyse exit status {done.returncode}")
     return json.loads(done.stdout)
+
+
+def scenario_of_run(summary):
+    """The scenario file a run was made from (summary.json's scenario.file, relative to the
+    repository root unless absolute) as a dict, with the run's --set overrides applied: each
+    "section.key=value" sets scenario[section][key], to a float where the value reads as one.
+    Raises OSError, KeyError, TypeError or yaml.YAMLError where the file or a section is missing."""
+    import yaml
+    path = summary["scenario"]["file"]
+    path = path if os.path.isabs(path) else os.path.join(ROOT, path)
+    with open(path) as f:
+        scenario = yaml.safe_load(f)
+    for override in summary["scenario"].get("overrides", []):
+        key, value = override.split("=", 1)
+        section, name = key.split(".", 1)
+        try:
+            value = float(value)
+        except ValueError:
+            pass
+        scenario.setdefault(section, {})[name] = value
+    return scenario
 
 
 def _json(value, indent):

@@ -200,25 +200,16 @@ def structure_of(summary):
 
 def structure_from_scenario_file(summary):
     """For runs whose summary.json predates its "structure" section: the scenario file (relative to
-    the repository root as scripts/validate gives it) with the run's structure.* and bottom.depth
-    overrides applied here; None, with the reason, when the file cannot be read."""
-    path = summary["scenario"]["file"]
-    path = path if os.path.isabs(path) else os.path.join(ROOT, path)
+    the repository root as scripts/validate gives it) with the run's overrides applied
+    (run_summary.scenario_of_run); None, with the reason, when the file cannot be read."""
     try:
-        import yaml
-        with open(path) as f:
-            scenario = yaml.safe_load(f)
+        from run_summary import scenario_of_run
+        scenario = scenario_of_run(summary)
         st = dict(scenario["structure"])
         st["bottom_depth"] = float((scenario.get("bottom") or {}).get("depth", 0.25))
-        for o in summary["scenario"].get("overrides", []):
-            key, value = o.split("=", 1)
-            if key.startswith("structure."):
-                st[key.split(".", 1)[1]] = float(value)
-            elif key == "bottom.depth":
-                st["bottom_depth"] = float(value)
         return st, None
     except (ImportError, OSError, KeyError, TypeError, ValueError) as e:
-        return None, f"{path}: {e}"
+        return None, f"{summary['scenario']['file']}: {e}"
 
 
 def profile_plot(root, name, summary):
