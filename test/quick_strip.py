@@ -1,6 +1,7 @@
-"""The quick strip shared by the Python tests of thin_ice_run and its tools: config/scenarios/quick.yaml
+"""Shared by the Python tests of thin_ice_run and its tools: the quick strip (config/scenarios/quick.yaml
 cut to a 1 m strip 0.1 m from the structure, which meets the structure after about 0.27 s and
-breaks bonds by 0.4 s, within seconds of wall time."""
+breaks bonds by 0.4 s, within seconds of wall time), running a tool, and the check that a tool
+refuses bad input with one message naming it."""
 import os
 import subprocess
 import sys
@@ -20,3 +21,13 @@ def run_or_fail(cmd, what="thin_ice_run"):
     if done.returncode != 0:
         sys.exit(f"FAIL: {what} exit status {done.returncode}: {done.stderr.strip()}")
     return done
+
+
+def refusal_problem(cmd, needle):
+    """None when cmd fails with exactly one line on stderr that names `needle` (the project's rule
+    for bad input); otherwise what it did instead."""
+    done = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=120)
+    lines = done.stderr.strip().splitlines()
+    if done.returncode != 0 and len(lines) == 1 and needle in lines[0]:
+        return None
+    return f"exit status {done.returncode}, stderr {done.stderr.strip()!r}"

@@ -12,6 +12,8 @@ import subprocess
 import sys
 import tempfile
 
+from quick_strip import refusal_problem
+
 # Ice of h = 0.1 m, rho_i = 900 kg/m^3 on water of 1000 kg/m^3: draft 0.09 m, so a cell at rest has
 # its centroid at z_rest = 0.05 - 0.09 = -0.04 m; below: z < -0.09 m, above: z > +0.01 m.
 # With the override ice.thickness=0.2 instead: z_rest = 0.1 - 0.18 = -0.08 m; below: z < -0.18 m,
@@ -88,10 +90,9 @@ def main():
         make_run(bad, ["water.density=800"])  # lighter than the ice: nothing floats
         for args, needle in (([os.path.join(tmp, "none")], "not a finished run"),
                              ([bad], "water.density 800")):
-            done = run(script, args)
-            lines = done.stderr.strip().splitlines()
-            if done.returncode == 0 or len(lines) != 1 or needle not in lines[0]:
-                failures.append(f"{args}: exit status {done.returncode}, stderr {done.stderr.strip()!r}")
+            problem = refusal_problem([script] + args, needle)
+            if problem:
+                failures.append(f"{args}: {problem}")
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("OK: ice_layers counts the cells under and over the sheet's level as worked out by hand")
