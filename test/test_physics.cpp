@@ -67,14 +67,20 @@ ContactConstants iceContact() {
 /// An existing pair that had no overlap before this step (a new pair would pass -1).
 constexpr double kNoReference = 0.0;
 
-TEST(Contact, HorizontalForceIsEquation1TimesHCubedForLevelCells) {
-  // Squares 0.2 m, overlapping by 1 mm along x, level: S = 0.2e-3 m^2, L = 0.2 m,
-  // F = (3E/(1-nu)) h S/L = (9e8/0.7) 0.05 1e-3 = 64285.7 N along +x on j. No vertical force.
+/// The force on two 0.2 m squares at rest, j 1 mm into i along x (S = 0.2e-3 m^2, L = 0.2 m) and
+/// `lift` [m] higher.
+PairForce squaresOneMillimetreIn(double lift, const ContactConstants& c) {
   const auto a = square({0.0, 0.0}, 0.2), b = square({0.199, 0.0}, 0.2);
   const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
   const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-  const BodyState j = {{0.199, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-  const PairForce f = demContactForce(o, i, j, iceContact(), kNoReference);
+  const BodyState j = {{0.199, 0.0}, lift, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  return demContactForce(o, i, j, c, kNoReference);
+}
+
+TEST(Contact, HorizontalForceIsEquation1TimesHCubedForLevelCells) {
+  // Squares 0.2 m, overlapping by 1 mm along x, level: S = 0.2e-3 m^2, L = 0.2 m,
+  // F = (3E/(1-nu)) h S/L = (9e8/0.7) 0.05 1e-3 = 64285.7 N along +x on j. No vertical force.
+  const PairForce f = squaresOneMillimetreIn(0.0, iceContact());
   EXPECT_NEAR(f.force_on_j.x, 9e8 / 0.7 * 0.05 * 1e-3, 1e-6 * 64285.7);
   EXPECT_NEAR(f.force_on_j.y, 0.0, 1e-9);
   EXPECT_EQ(f.fz_on_j, 0.0);
@@ -84,11 +90,7 @@ TEST(Contact, VerticalForceIsEquation3) {
   // Same overlap, j 0.02 m higher: z = 0.4, K = 0.6 (n = 1), Z = 0.03 m,
   // F_v = 0.6 * 0.03 * (9e8/0.7) * 2e-4 / 0.05 = 92571.4 N upwards on j, and the horizontal
   // force over the 0.03 m face: F_n = 0.6 (9e8/0.7) 0.03 1e-3 = 23142.9 N.
-  const auto a = square({0.0, 0.0}, 0.2), b = square({0.199, 0.0}, 0.2);
-  const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
-  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-  const BodyState j = {{0.199, 0.0}, 0.02, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-  const PairForce f = demContactForce(o, i, j, iceContact(), kNoReference);
+  const PairForce f = squaresOneMillimetreIn(0.02, iceContact());
   EXPECT_NEAR(f.fz_on_j, 0.6 * 0.03 * 9e8 / 0.7 * 2e-4 / 0.05, 1e-6 * 92571.4);
   EXPECT_NEAR(f.force_on_j.x, 0.6 * 9e8 / 0.7 * 0.03 * 1e-3, 1e-6 * 23142.9);
 }
@@ -96,13 +98,9 @@ TEST(Contact, VerticalForceIsEquation3) {
 TEST(Contact, HorizontalAndVerticalExponentsActApart) {
   // As above with n = 2 for K_n and n = 1 for K_v: K_n = 0.6^2 = 0.36, K_v = 0.6, so
   // F_n = 0.36 (9e8/0.7) 0.03 1e-3 = 13885.7 N and F_v = 92571.4 N as before.
-  const auto a = square({0.0, 0.0}, 0.2), b = square({0.199, 0.0}, 0.2);
-  const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
-  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-  const BodyState j = {{0.199, 0.0}, 0.02, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
   ContactConstants c = iceContact();
   c.exponent_h = 2.0;
-  const PairForce f = demContactForce(o, i, j, c, kNoReference);
+  const PairForce f = squaresOneMillimetreIn(0.02, c);
   EXPECT_NEAR(f.fz_on_j, 0.6 * 0.03 * 9e8 / 0.7 * 2e-4 / 0.05, 1e-6 * 92571.4);
   EXPECT_NEAR(f.force_on_j.x, 0.36 * 9e8 / 0.7 * 0.03 * 1e-3, 1e-6 * 13885.7);
 }
@@ -161,15 +159,11 @@ TEST(Contact, CollisionConservesMomentumAndGainsNoEnergy) {
 TEST(Contact, CrushingLimitsTheNormalForceToSigmaCTimesTheFace) {
   // The 1 mm overlap of the Eq. (1) test would push with 64285.7 N; with sigma_c = 1 MPa the face
   // Z x L = 0.05 x 0.2 m crushes at 1e6 * 0.01 = 10000 N.
-  const auto a = square({0.0, 0.0}, 0.2), b = square({0.199, 0.0}, 0.2);
-  const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
-  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-  const BodyState j = {{0.199, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
   ContactConstants c = iceContact();
   c.crushing_strength = 1e6;
-  EXPECT_NEAR(demContactForce(o, i, j, c, kNoReference).force_on_j.x, 10000.0, 1e-9 * 10000.0);
+  EXPECT_NEAR(squaresOneMillimetreIn(0.0, c).force_on_j.x, 10000.0, 1e-9 * 10000.0);
   c.crushing_strength = 1e8;  // 1e6 N: above the elastic force, which then holds
-  EXPECT_NEAR(demContactForce(o, i, j, c, kNoReference).force_on_j.x, 9e8 / 0.7 * 0.05 * 1e-3, 1e-6 * 64285.7);
+  EXPECT_NEAR(squaresOneMillimetreIn(0.0, c).force_on_j.x, 9e8 / 0.7 * 0.05 * 1e-3, 1e-6 * 64285.7);
 }
 
 TEST(Contact, PieceRestingOnAnotherIsPushedOverItsVerticalOverlapOnly) {
