@@ -1,6 +1,6 @@
 // CPU backend. One step (Algorithm 1, inner loop body):
 //   world polygons and bounding boxes of every cell          (parallel over cells)
-//   RMIB bond forces and failure                              (parallel over bonds)   Eqs. 8-13
+//   RMIB bond forces and failure (cpu_bond_pass.cpp)          (parallel over bonds)   Eqs. 8-13
 //   DEM contact forces of the candidate pairs                 (parallel over pairs)   Eqs. 1-4
 //   per cell: gather bond and contact forces in a fixed order, water, structure, pusher,
 //   bottom and walls, then symplectic Euler                   (parallel over cells)   Eqs. 14-17
@@ -17,6 +17,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "cpu_bond_pass.hpp"
 #include "thin_ice_sim/incidence.hpp"
 #include "thin_ice_sim/neighbour_search.hpp"
 
@@ -35,7 +36,8 @@ class CpuBackend final : public Backend {
   CpuBackend(const Model& model, int threads)
       : model_(model),
         threads_(threads > 0 ? threads : omp_get_max_threads()),
-        parallel_(threads_ > 1 && (threads > 0 || model.cell_count >= kMinCellsForThreads)) {
+        parallel_(threads_ > 1 && (threads > 0 || model.cell_count >= kMinCellsForThreads)),
+        bond_pass_(model) {
     const int n = model_.cell_count;
     world_.resize(static_cast<size_t>(n) * kV);
     turn_.resize(n);
@@ -203,23 +205,12 @@ class CpuBackend final : public Backend {
   }
 
   void computeBondForces() {
-    const int bonds = static_cast<int>(model_.bond_rest.size());
-    int newly_broken = 0;
-#pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_) reduction(+ : newly_broken)
-    for (int b = 0; b < bonds; ++b) {
-      if (bond_state_[b] != kBondIntact) continue;
-      const int i = model_.bond_i[b], j = model_.bond_j[b];
-      const BondForce f = rmibBondForce(model_.bond_rest[b], body(i), turn_[i], body(j), turn_[j],
-                                        model_.constants.bond);
-      bond_load_[b] = bondLoad(f);
-      if (f.breaks) {
-        bond_state_[b] = kBondBreaking;  // for good; its force of this step still acts
-        ++newly_broken;
-      }
-    }
+    const int newly_broken =
+        bond_pass_.run(motion_.data(), turn_.data(), bond_state_.data(), bond_load_.data(), threads_, parallel_);
     if (newly_broken > 0) {
       broken_count_ += newly_broken;
       rebuild_requested_ = true;  // the pair now needs a DEM contact
+      const int bonds = static_cast<int>(bond_state_.size());
       for (int b = 0; b < bonds; ++b) {
         if (bond_state_[b] == kBondBreaking) just_broken_.push_back(b);
       }
@@ -325,6 +316,7 @@ class CpuBackend final : public Backend {
   const Model& model_;
   const int threads_;
   const bool parallel_;  ///< run the loops on threads_ threads (false: one thread)
+  const CpuBondPass bond_pass_;
   std::vector<CellMotion> motion_, reference_;
   std::vector<Vec2> world_;               ///< (cells x kV) world vertices [m]
   std::vector<Vec2> turn_;                ///< (cells) (cos yaw, sin yaw)
