@@ -74,10 +74,6 @@ __global__ void placeCells(int n, const RunScalars* run, const CellMotion* motio
                       world + (size_t)k * kV, box + 4 * k);
 }
 
-__device__ BodyState bodyOf(const CellMotion& m, double mass, double inertia) {
-  return {{m.x, m.y}, m.z, {m.vx, m.vy}, m.vz, m.wz, mass, inertia};
-}
-
 __global__ void bondForces(int bonds, RunScalars* run, ModelConstants c, const int* bond_i, const int* bond_j,
                            const BondRest* rest, const CellMotion* motion, const double* mass, const double* inertia,
                            const Vec2* turn, unsigned char* state, PairLoad* load) {

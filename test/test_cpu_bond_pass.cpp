@@ -93,10 +93,7 @@ TEST_P(CpuBondPassTest, GivesTheLawsLoadsAndFailuresBondByBond) {
       continue;
     }
     const int i = model.bond_i[b], j = model.bond_j[b];
-    auto body = [&](int c) {
-      const CellMotion& m = s.motion[c];
-      return BodyState{{m.x, m.y}, m.z, {m.vx, m.vy}, m.vz, m.wz, model.mass[c], model.inertia[c]};
-    };
+    auto body = [&](int c) { return bodyOf(s.motion[c], model.mass[c], model.inertia[c]); };
     const BondForce f = rmibBondForce(model.bond_rest[b], body(i), s.turn[i], body(j), s.turn[j], model.constants.bond);
     const PairLoad want = bondLoad(f);
     // The vectorised arithmetic may place its fused multiply-adds elsewhere: the last bits only.

@@ -143,8 +143,7 @@ class CpuBackend final : public Backend {
 
  private:
   BodyState body(int k) const {
-    const CellMotion& m = motion_[k];
-    return {{m.x, m.y}, m.z, {m.vx, m.vy}, m.vz, m.wz, model_.mass[k], model_.inertia[k]};
+    return bodyOf(motion_[k], model_.mass[k], model_.inertia[k]);
   }
 
   /// Candidate pairs within the search radius that are not held by an intact bond.

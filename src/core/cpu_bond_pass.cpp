@@ -41,11 +41,8 @@ long long forceBlock(const Model& model, const BondRestColumns& r, int first, in
                            r.k_shear[b],                       r.k_vertical[b],
                            r.damping_normal[b],                r.damping_shear[b],
                            r.damping_vertical[b]};
-    const CellMotion& mi = motion[i];
-    const CellMotion& mj = motion[j];
-    const BodyState body_i = {{mi.x, mi.y}, mi.z, {mi.vx, mi.vy}, mi.vz, mi.wz, mass[i], inertia[i]};
-    const BodyState body_j = {{mj.x, mj.y}, mj.z, {mj.vx, mj.vy}, mj.vz, mj.wz, mass[j], inertia[j]};
-    const BondForce f = rmibBondForce(rest, body_i, turn[i], body_j, turn[j], c);
+    const BondForce f = rmibBondForce(rest, bodyOf(motion[i], mass[i], inertia[i]), turn[i],
+                                      bodyOf(motion[j], mass[j], inertia[j]), turn[j], c);
     const PairLoad l = bondLoad(f);
     // Field by field: a whole-struct store keeps the compiler from vectorising.
     load[b].force_on_j.x = l.force_on_j.x;

@@ -108,6 +108,11 @@ struct CellStepResult {
   bool moved_far;    ///< Algorithm 1, lines 14-16: moved or turned too far since the last rebuild
 };
 
+/// A cell's state as the pair laws (bonds, contacts) take it: its motion with its mass and inertia.
+TIS_HD BodyState bodyOf(const CellMotion& m, double mass, double inertia) {
+  return {{m.x, m.y}, m.z, {m.vx, m.vy}, m.vz, m.wz, mass, inertia};
+}
+
 /// Adds a pair's load to one of its cells (is_j: the cell is the pair's j).
 TIS_HD void addPairLoad(const PairLoad& f, bool is_j, double& fx, double& fy, double& fz, double& tz) {
   const double sign = is_j ? 1.0 : -1.0;
