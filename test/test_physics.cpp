@@ -182,6 +182,63 @@ TEST(Contact, PieceRestingOnAnotherIsPushedOverItsVerticalOverlapOnly) {
   EXPECT_NEAR(f.fz_on_j, k_n * 1e-3 * 9e8 / 0.7 * 0.03 / 0.05, 1e-6 * f.fz_on_j);
 }
 
+/// The squares of squaresOneMillimetreIn, j `lift` higher and moving at (vy, vz) [m/s].
+PairForce squaresSlipping(double lift, double vy, double vz, const ContactConstants& c) {
+  const auto a = square({0.0, 0.0}, 0.2), b = square({0.199, 0.0}, 0.2);
+  const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
+  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const BodyState j = {{0.199, 0.0}, lift, {0.0, vy}, vz, 0.0, 1.84, kSquareInertia};
+  return demContactForce(o, i, j, c, kNoReference);
+}
+
+TEST(Contact, EdgeFaceFrictionResistsTheVerticalSlipOfOffsetCells) {
+  // j 0.02 m higher, sliding down at 0.1 m/s against i's edge: F_n = 23142.9 N on the 0.03 m
+  // face (VerticalForceIsEquation3). Level-only: nothing resists the vertical slip, fz is F_v
+  // with its damping. Edge face: mu F_n = 0.3 x 23142.9 = 6942.9 N more upwards on j (0.1 m/s is
+  // above v_reg = 1 mm/s; the bound beta m_eff/dt = 1.85e5 N s/m is above mu F_n / 0.1 = 69429).
+  ContactConstants level = iceContact(), edge = iceContact();
+  level.vertical_slip_friction = kVerticalSlipLevelOnly;
+  edge.vertical_slip_friction = kVerticalSlipEdgeFace;
+  const PairForce free_slip = squaresSlipping(0.02, 0.0, -0.1, level);
+  const PairForce held = squaresSlipping(0.02, 0.0, -0.1, edge);
+  const double f_n = 0.6 * 9e8 / 0.7 * 0.03 * 1e-3;
+  const double k_v = 0.6 * 9e8 / 0.7 * 2e-4 / 0.05;                              // [N/m]
+  const double f_v = k_v * 0.03 + 2.0 * 0.2 * std::sqrt(k_v * 0.5 * 1.84) * 0.1;  // closing: damping adds
+  EXPECT_NEAR(free_slip.fz_on_j, f_v, 1e-6 * f_v);
+  EXPECT_NEAR(held.fz_on_j - free_slip.fz_on_j, 0.3 * f_n, 1e-6 * f_n);
+  // No horizontal slip: the horizontal force is F_n alone in both.
+  EXPECT_NEAR(held.force_on_j.x, f_n, 1e-6 * f_n);
+  EXPECT_EQ(held.force_on_j.x, free_slip.force_on_j.x);
+  EXPECT_EQ(held.force_on_j.y, 0.0);
+}
+
+TEST(Contact, EdgeFaceFrictionKeepsTheHorizontalBoundAndLevelCells) {
+  ContactConstants level = iceContact(), edge = iceContact();
+  edge.vertical_slip_friction = kVerticalSlipEdgeFace;
+  // Horizontal slip along the edge (j at 0.1 m/s in y), no bound: both readings resist it with
+  // mu (F_n + F_v) = 0.3 (23142.9 + 92571.4) = 34714.3 N.
+  level.friction_rate_limit = edge.friction_rate_limit = 1e300;
+  const double f_n = 0.6 * 9e8 / 0.7 * 0.03 * 1e-3, f_v = 0.6 * 0.03 * 9e8 / 0.7 * 2e-4 / 0.05;
+  EXPECT_NEAR(squaresSlipping(0.02, 0.1, 0.0, level).force_on_j.y, -0.3 * (f_n + f_v), 1e-6 * f_v);
+  EXPECT_NEAR(squaresSlipping(0.02, 0.1, 0.0, edge).force_on_j.y, -0.3 * (f_n + f_v), 1e-6 * f_v);
+  // Level cells: the two readings are the same law, to the bit.
+  const PairForce a = squaresSlipping(0.0, 0.05, -0.1, level), b = squaresSlipping(0.0, 0.05, -0.1, edge);
+  EXPECT_EQ(a.force_on_j.x, b.force_on_j.x);
+  EXPECT_EQ(a.force_on_j.y, b.force_on_j.y);
+  EXPECT_EQ(a.fz_on_j, b.fz_on_j);
+  // With the bound of dt = 1e-6 s and a slow slip (1 cm/s in y and down), mu F_n / |slip| is far
+  // above beta m_eff / dt: the edge face takes all of it and the top faces add nothing. m_eff from
+  // the overlap's centroid (0.0995, 0), 0.0995 m from both centroids: 1/m_eff = 2 (1/m + r^2/I).
+  const double m_eff = 1.0 / (2.0 * (1.0 / 1.84 + 0.0995 * 0.0995 / kSquareInertia));
+  const double limit = 0.5 / 1e-6 * m_eff;  // [N s/m]
+  ContactConstants bounded = iceContact();
+  bounded.vertical_slip_friction = kVerticalSlipEdgeFace;
+  const PairForce slow = squaresSlipping(0.02, 0.01, -0.01, bounded);
+  EXPECT_NEAR(slow.force_on_j.y, -limit * 0.01, 1e-6 * limit * 0.01);
+  const double damped_f_v = f_v + 2.0 * 0.2 * std::sqrt(0.6 * 9e8 / 0.7 * 2e-4 / 0.05 * 0.92) * 0.01;
+  EXPECT_NEAR(slow.fz_on_j, damped_f_v + limit * 0.01, 1e-6 * damped_f_v);
+}
+
 TEST(Contact, ANewPairCountsOnlyTheOverlapBeyondItsFirst) {
   // A pair that enters the list overlapping by S0 (a bond broke) pushes with nothing at first,
   // then with the overlap beyond S0; when the overlap shrinks, S_ref shrinks with it.

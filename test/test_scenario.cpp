@@ -256,6 +256,24 @@ TEST_F(ScenarioFileTest, EveryVerticalStressReadingParses) {
   EXPECT_EQ(loadScenario(path, {"ice.vertical_stress=shear"}).params.ice.vertical_stress, VerticalStressModel::kShear);
 }
 
+TEST_F(ScenarioFileTest, VerticalSlipFrictionIsOptionalAndTakesEitherReading) {
+  const std::string path = kScenarioDir + "quick.yaml";
+  EXPECT_EQ(loadScenario(path).params.ice.vertical_slip_friction, VerticalSlipFrictionModel::kLevelOnly);
+  EXPECT_EQ(loadScenario(path, {"ice.vertical_slip_friction=edge_face"}).params.ice.vertical_slip_friction,
+            VerticalSlipFrictionModel::kEdgeFace);
+  EXPECT_EQ(loadScenario(path, {"ice.vertical_slip_friction=level_only"}).params.ice.vertical_slip_friction,
+            VerticalSlipFrictionModel::kLevelOnly);
+  try {
+    loadScenario(path, {"ice.vertical_slip_friction=sticky"});
+    FAIL() << "an unknown reading was accepted";
+  } catch (const ScenarioError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("ice.vertical_slip_friction"), std::string::npos) << m;
+    EXPECT_NE(m.find("expected level_only or edge_face"), std::string::npos) << m;
+    EXPECT_NE(m.find("sticky"), std::string::npos) << m;
+  }
+}
+
 TEST_F(ScenarioFileTest, OverridesApplyAfterTheFileAndChangeTheHash) {
   const std::string path = kScenarioDir + "quick.yaml";
   const Scenario base = loadScenario(path);

@@ -17,6 +17,13 @@ enum class VerticalStressModel {
   kPlate,    ///< sigma_v = 6 M / (L_e h^2), M = |F_v| e^(-pi/4) l: the floating plate's moment arm
 };
 
+/// What resists the vertical slip of two cells in contact at different heights (friction is not
+/// in the paper; physics/contact.hpp, docs/model.md).
+enum class VerticalSlipFrictionModel {
+  kLevelOnly,  ///< only level cells: at an offset, friction acts on the horizontal slip alone
+  kEdgeFace,   ///< also the edge face that carries F_n: mu F_n against the vertical slip along it
+};
+
 struct IceParams {
   double thickness = 0.051;             ///< h [m]
   double density = 920.0;               ///< rho_i [kg/m^3]
@@ -30,6 +37,7 @@ struct IceParams {
   double compression_coupling = 0.0;    ///< k of Eq. (13) [-]
   VerticalStressModel vertical_stress = VerticalStressModel::kBending;
   double friction_ice_ice = 0.3;        ///< Coulomb coefficient between cells [-]
+  VerticalSlipFrictionModel vertical_slip_friction = VerticalSlipFrictionModel::kLevelOnly;
   double contact_damping_ratio = 0.2;   ///< zeta of DEM contacts (fraction of critical) [-]
   double bond_damping_ratio = 0.2;      ///< zeta of RMIB bonds [-]
 };

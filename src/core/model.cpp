@@ -18,6 +18,10 @@ int verticalStressReading(VerticalStressModel model) {
   return kVerticalShear;
 }
 
+int verticalSlipFrictionReading(VerticalSlipFrictionModel model) {
+  return model == VerticalSlipFrictionModel::kEdgeFace ? kVerticalSlipEdgeFace : kVerticalSlipLevelOnly;
+}
+
 constexpr double kPi = 3.14159265358979323846;
 
 ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
@@ -35,7 +39,8 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
                rate_limit,
                ice.compressive_strength,
                ice.contact_damping_ratio,
-               regularisation};
+               regularisation,
+               verticalSlipFrictionReading(ice.vertical_slip_friction)};
   c.bond = {h,
             ice.smoothing_exponent_h,
             ice.smoothing_exponent_v,

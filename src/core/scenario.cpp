@@ -5,7 +5,8 @@
 // a map whose keys are the snake_case field names of the matching struct in params.hpp
 // (IceParams, IceSheetSpec, WaterParams, BottomParams, StructureParams, PusherParams,
 // ChannelParams, NumericsParams), plus an optional top-level `description:` text.
-//   Enums:    ice.vertical_stress: shear | bending | plate;  sheet.layout: jittered_grid | poisson_disk
+//   Enums:    ice.vertical_stress: shear | bending | plate;  sheet.layout: jittered_grid | poisson_disk;
+//             ice.vertical_slip_friction: level_only | edge_face
 //   Integers: structure.panels, sheet.lloyd_iterations, numerics.max_steps_between_rebuilds,
 //             numerics.structure_substeps,
 //             numerics.threads (signed), sheet.seed (unsigned 64 bit); decimal digits only.
@@ -124,6 +125,13 @@ VerticalStressModel toVerticalStress(const YAML::Node& n) {
   throw BadValue(describe(n));
 }
 
+VerticalSlipFrictionModel toVerticalSlipFriction(const YAML::Node& n) {
+  const std::string& s = plainScalar(n);
+  if (s == "level_only") return VerticalSlipFrictionModel::kLevelOnly;
+  if (s == "edge_face") return VerticalSlipFrictionModel::kEdgeFace;
+  throw BadValue(describe(n));
+}
+
 SeedLayout toLayout(const YAML::Node& n) {
   try {
     return parseSeedLayout(plainScalar(n), "sheet.layout");
@@ -186,6 +194,8 @@ const std::vector<Section>& sections() {
         field(&P::ice, &IceParams::vertical_stress, "vertical_stress", "shear, bending or plate",
               toVerticalStress, kRequired),
         number(&P::ice, &IceParams::friction_ice_ice, "friction_ice_ice"),
+        field(&P::ice, &IceParams::vertical_slip_friction, "vertical_slip_friction", "level_only or edge_face",
+              toVerticalSlipFriction, false),
         number(&P::ice, &IceParams::contact_damping_ratio, "contact_damping_ratio"),
         number(&P::ice, &IceParams::bond_damping_ratio, "bond_damping_ratio")}},
       {"sheet",

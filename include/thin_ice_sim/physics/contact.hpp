@@ -8,7 +8,9 @@
 //                                         the cells apart vertically (zero when level)
 //   both act at the overlap centroid; the yaw moment is (point - centroid) x F (Eq. 4).
 // Added, as every DEM needs: normal damping (ratio zeta of critical, never attractive) and
-// regularised Coulomb friction against the slip at the contact point.
+// regularised Coulomb friction against the slip at the contact point; between cells at
+// different heights, either against the horizontal slip only or, with `edge_face`, also against
+// the vertical slip along the edge face that carries F_n (VerticalSlipFriction below).
 // Three departures, each forced by a blow-up traced to it (docs/model.md, "Deviations"):
 //  - d = min(S/L, Z): two slabs that overlap by S/L across and by Z up and down are separated
 //    along the shallower of the two. A piece resting on another (Z ~ 1 mm, S/L ~ 0.1 m) used to
@@ -32,6 +34,19 @@
 
 namespace thin_ice {
 
+/// Which faces of two overlapping slabs resist their relative vertical slip (friction is not in
+/// the paper; docs/model.md, "Friction between cells").
+enum VerticalSlipFriction : int {
+  /// Only level cells (dz = 0): at any offset the friction bound mu (F_n + F_v) acts against the
+  /// horizontal slip alone, so a piece pressed edge-on against another slides up or down freely.
+  kVerticalSlipLevelOnly = 0,
+  /// Also the edge face: the two slabs touch over a vertical face Z high that carries F_n, whose
+  /// friction (at most mu F_n) acts against the slip along that face, vertical and horizontal;
+  /// the overlap of top and bottom faces carries F_v, whose friction (at most mu F_v) acts against
+  /// the horizontal slip. For level cells (F_v = 0) this is the level-only reading.
+  kVerticalSlipEdgeFace = 1,
+};
+
 struct ContactConstants {
   double thickness;             ///< h [m]
   double plane_modulus;         ///< 3E/(1-nu) [Pa], Eq. (1)
@@ -43,6 +58,7 @@ struct ContactConstants {
   double crushing_strength;     ///< sigma_c [Pa]: F_n <= sigma_c Z L
   double damping_ratio;         ///< zeta [-]
   double regularisation_speed;  ///< [m/s]
+  int vertical_slip_friction;   ///< a VerticalSlipFriction: what resists vertical slip between offset cells
 };
 
 /// What a contact law needs of one body.
@@ -141,8 +157,21 @@ TIS_HD PairForce demContactForce(const PolygonOverlap& overlap, const BodyState&
   const Vec2 slip = relative - approach * n;
   const double slip_z = j.vz - i.vz;
   const double slip_mass = 1.0 / (inverseSlipMass(i, overlap.centroid) + inverseSlipMass(j, overlap.centroid));
+  const double scale_limit = c.friction_rate_limit * slip_mass;
+  if (side != 0.0 && c.vertical_slip_friction == kVerticalSlipEdgeFace) {
+    // The edge face (normal n, force F_n) resists the slip along it in 3-D; the top and bottom
+    // faces (normal z, force F_v) the horizontal slip. Their sum on the horizontal slip stays
+    // within the explicit step's bound (friction.hpp); the vertical slip's effective mass,
+    // m_i m_j / (m_i + m_j), is at least slip_mass, so the edge face's share is stable there too.
+    const double edge = frictionScale(c.friction, normal, slip.x, slip.y, slip_z, c.regularisation_speed, scale_limit);
+    const double faces =
+        frictionScale(c.friction, vertical, slip.x, slip.y, 0.0, c.regularisation_speed, scale_limit - edge);
+    f.force_on_j = normal * n - (edge + faces) * slip;
+    f.fz_on_j = side * vertical - edge * slip_z;
+    return f;
+  }
   const double scale = frictionScale(c.friction, normal + vertical, slip.x, slip.y, side != 0.0 ? 0.0 : slip_z,
-                                     c.regularisation_speed, c.friction_rate_limit * slip_mass);
+                                     c.regularisation_speed, scale_limit);
   f.force_on_j = normal * n - scale * slip;
   f.fz_on_j = side * vertical - (side != 0.0 ? 0.0 : scale * slip_z);
   return f;
