@@ -118,10 +118,14 @@ def window_means(history, width):
     return out
 
 
+LONG_RUN = re.compile(r"[WMS]-\d(-[a-z]\w*)?-long")  # group 1: the variant ("-edge"), or None
+
+
 def long_runs_section(root, runs, histories, rel):
-    """The runs past the matrix's length (named ID-long): their mean load per 0.5 m of pushed
-    length, the weak-above-medium comparison window by window at equal L, and one plot."""
-    names = sorted(n for n in runs if re.fullmatch(r"[WMS]-\d-long", n) and histories.get(n)
+    """The runs past the matrix's length (named ID-long, or ID-VARIANT-long for a run of another
+    reading, e.g. W-3-edge-long): their mean load per 0.5 m of pushed length, the weak-above-medium
+    comparison window by window at equal L (between runs of the same variant), and one plot."""
+    names = sorted(n for n in runs if LONG_RUN.fullmatch(n) and histories.get(n)
                    and window_means(histories[n], WINDOW_M))
     if not names:
         return ["## Long runs", "", "None yet (`scripts/validate --series ID --tag long --until-length L`).", ""]
@@ -149,6 +153,8 @@ def long_runs_section(root, runs, histories, rel):
     medium = [n for n in names if n[0] == "M"]
     for w in weak:
         for m in medium:
+            if LONG_RUN.fullmatch(w).group(1) != LONG_RUN.fullmatch(m).group(1):
+                continue  # another reading: not the same model
             pairs = [(means[w][k], means[m][k]) for k in sorted(set(means[w]) & set(means[m]))
                      if means[w][k][1] - means[w][k][0] > WINDOW_M - 1e-9
                      and means[m][k][1] - means[m][k][0] > WINDOW_M - 1e-9 and means[m][k][2] != 0.0]
@@ -163,15 +169,19 @@ def long_runs_section(root, runs, histories, rel):
     if plt is not None:
         fig, ax = plt.subplots(figsize=(10, 4.8))
         colours = {"W": "#1f77b4", "M": "#ff7f0e", "S": "#2ca02c"}
+        drawn_experiment = set()
         for n in names:
             h, c = histories[n], colours[n[0]]
-            ax.plot(h["lengths"], h["loads"], color=c, lw=0.5, alpha=0.35)
+            variant = LONG_RUN.fullmatch(n).group(1)
+            ax.plot(h["lengths"], h["loads"], color=c, lw=0.5, alpha=0.35 if not variant else 0.2)
             windows = [means[n][k] for k in sorted(means[n])]
             ax.step([a for a, _, _ in windows] + [windows[-1][1]], [v for _, _, v in windows] + [windows[-1][2]],
-                    where="post", color=c, lw=2, label=f"{n}: mean per {WINDOW_M} m")
+                    where="post", color=c, lw=2, ls=":" if variant else "-", label=f"{n}: mean per {WINDOW_M} m")
             scale = (runs[n].get("experiment") or {}).get("width_scale", 1.0) or 1.0
-            ax.axhline(EXPERIMENT_MEAN[n[0]] * scale, color=c, ls="--", lw=1,
-                       label=f"experiment, {ICE_TYPE[n[0]]} ice: steady mean")
+            if (n[0], scale) not in drawn_experiment:
+                drawn_experiment.add((n[0], scale))
+                ax.axhline(EXPERIMENT_MEAN[n[0]] * scale, color=c, ls="--", lw=1,
+                           label=f"experiment, {ICE_TYPE[n[0]]} ice: steady mean")
         ax.set_xlabel("pushed ice length L [m]")
         ax.set_ylabel("F_cal [N]")
         ax.set_title("Long runs: F_cal (thin) and its mean per 0.5 m of pushed ice (steps)")
@@ -412,12 +422,14 @@ def main():
 
     lines += long_runs_section(a.runs, runs, histories, rel)
 
-    # Rubble pile profiles: strong ice first (the paper's Fig. 15), then the longest run of each type.
+    # Rubble pile profiles: strong ice first (the paper's Fig. 15), then the longest run of each
+    # type, of the scenarios' reading and of the edge_face reading of ice.vertical_slip_friction.
     pile = []
     longest = {}
     for name, summary in runs.items():
-        kind = name[0]
-        if re.fullmatch(r"[WMS]-\d(-long)?", name) and summary.get("pushed_length_m", 0) > longest.get(kind, ("", 0))[1]:
+        match = re.fullmatch(r"[WMS]-\d(-edge)?(-long)?", name)
+        kind = (name[0], (match.group(1) or "") if match else "")
+        if match and summary.get("pushed_length_m", 0) > longest.get(kind, ("", 0))[1]:
             longest[kind] = (name, summary.get("pushed_length_m", 0))
     shown = [n for n in ("S-1", "S-2") if n in runs] + [v[0] for k, v in sorted(longest.items()) if v[0] not in ("S-1", "S-2")]
     for name in shown:
