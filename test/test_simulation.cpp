@@ -178,6 +178,16 @@ TEST(Simulation, TheStructuresFrictionLimitIsScaledToTheSubstep) {
   EXPECT_DOUBLE_EQ(m.constants.pusher.friction_rate_limit, beta / dt);
 }
 
+TEST(Simulation, TheVerticalSlipFrictionReadingReachesTheContactLaw) {
+  // ice.vertical_slip_friction selects the branch of demContactForce (physics/contact.hpp).
+  const IceSheet sheet = generateIceSheet(loadScenario(kQuick).params.sheet);
+  const Model level = buildModel(loadScenario(kQuick).params, sheet, "quick");
+  const Model edge =
+      buildModel(loadScenario(kQuick, {"ice.vertical_slip_friction=edge_face"}).params, sheet, "quick edge_face");
+  EXPECT_EQ(level.constants.contact.vertical_slip_friction, kVerticalSlipLevelOnly);
+  EXPECT_EQ(edge.constants.contact.vertical_slip_friction, kVerticalSlipEdgeFace);
+}
+
 TEST(Simulation, CudaBackendRequestFailsClearlyAndAutoFallsBackWithoutAGpu) {
   if (gpuMissing().empty()) {
     Simulation sim(shortStrip(0), BackendKind::kAuto);
