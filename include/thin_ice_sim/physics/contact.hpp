@@ -35,7 +35,7 @@
 namespace thin_ice {
 
 /// Which faces of two overlapping slabs resist their relative vertical slip (friction is not in
-/// the paper; docs/model.md, "Friction between cells").
+/// the paper; docs/model.md, "DEM contacts", `ice.vertical_slip_friction`).
 enum VerticalSlipFriction : int {
   /// Only level cells (dz = 0): at any offset the friction bound mu (F_n + F_v) acts against the
   /// horizontal slip alone, so a piece pressed edge-on against another slides up or down freely.
