@@ -258,7 +258,11 @@ TEST_F(ScenarioFileTest, EveryVerticalStressReadingParses) {
 
 TEST_F(ScenarioFileTest, VerticalSlipFrictionIsOptionalAndTakesEitherReading) {
   const std::string path = kScenarioDir + "quick.yaml";
-  EXPECT_EQ(loadScenario(path).params.ice.vertical_slip_friction, VerticalSlipFrictionModel::kLevelOnly);
+  // Left out, the key takes the reading the shipped scenarios name.
+  const std::string without = write("without.yaml", withLine(quick_, "ice", "vertical_slip_friction", ""));
+  EXPECT_EQ(loadScenario(without).params.ice.vertical_slip_friction, VerticalSlipFrictionModel::kEdgeFace);
+  EXPECT_EQ(loadScenario(without, {"ice.vertical_slip_friction=level_only"}).params.ice.vertical_slip_friction,
+            VerticalSlipFrictionModel::kLevelOnly);
   EXPECT_EQ(loadScenario(path, {"ice.vertical_slip_friction=edge_face"}).params.ice.vertical_slip_friction,
             VerticalSlipFrictionModel::kEdgeFace);
   EXPECT_EQ(loadScenario(path, {"ice.vertical_slip_friction=level_only"}).params.ice.vertical_slip_friction,

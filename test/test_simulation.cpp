@@ -181,7 +181,8 @@ TEST(Simulation, TheStructuresFrictionLimitIsScaledToTheSubstep) {
 TEST(Simulation, TheVerticalSlipFrictionReadingReachesTheContactLaw) {
   // ice.vertical_slip_friction selects the branch of demContactForce (physics/contact.hpp).
   const IceSheet sheet = generateIceSheet(loadScenario(kQuick).params.sheet);
-  const Model level = buildModel(loadScenario(kQuick).params, sheet, "quick");
+  const Model level =
+      buildModel(loadScenario(kQuick, {"ice.vertical_slip_friction=level_only"}).params, sheet, "quick level_only");
   const Model edge =
       buildModel(loadScenario(kQuick, {"ice.vertical_slip_friction=edge_face"}).params, sheet, "quick edge_face");
   EXPECT_EQ(level.constants.contact.vertical_slip_friction, kVerticalSlipLevelOnly);

@@ -22,6 +22,7 @@ enum class VerticalStressModel {
 enum class VerticalSlipFrictionModel {
   kLevelOnly,  ///< only level cells: at an offset, friction acts on the horizontal slip alone
   kEdgeFace,   ///< also the edge face that carries F_n: mu F_n against the vertical slip along it
+               ///< (the default since 2026-12-02: docs/validation/calibration.md)
 };
 
 struct IceParams {
@@ -37,7 +38,7 @@ struct IceParams {
   double compression_coupling = 0.0;    ///< k of Eq. (13) [-]
   VerticalStressModel vertical_stress = VerticalStressModel::kBending;
   double friction_ice_ice = 0.3;        ///< Coulomb coefficient between cells [-]
-  VerticalSlipFrictionModel vertical_slip_friction = VerticalSlipFrictionModel::kLevelOnly;
+  VerticalSlipFrictionModel vertical_slip_friction = VerticalSlipFrictionModel::kEdgeFace;
   double contact_damping_ratio = 0.2;   ///< zeta of DEM contacts (fraction of critical) [-]
   double bond_damping_ratio = 0.2;      ///< zeta of RMIB bonds [-]
 };

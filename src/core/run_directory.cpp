@@ -77,8 +77,9 @@ Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, s
     const std::string what = "scenario " + file + " has changed since the run (hash " + scenario.hash + ", the run's " +
                              run_hash + ")";
     if (!accept_changed_file) {
-      throw std::runtime_error(what + ": its sheet and bonds may not be the run's (--accept-changed-scenario if only "
-                               "its comments changed)");
+      throw std::runtime_error(what + ": its sheet and bonds may not be the run's (--accept-changed-scenario if the "
+                               "run's parameters did not change: only comments, or one of its --set values written "
+                               "into the file)");
     }
     warning = what + "; taken as the run's, as asked";
   }

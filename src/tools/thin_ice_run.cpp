@@ -76,7 +76,7 @@ struct UsageError : std::runtime_error {  // bad command line: exit status 2 wit
 struct Options {
   std::string scenario, out;
   std::string resume;                  // the run directory to go on with (then also `out`)
-  bool accept_changed_scenario = false;  // --resume with a scenario file whose comments changed
+  bool accept_changed_scenario = false;  // --resume with a scenario file changed in text, not in the run's parameters
   std::vector<std::string> overrides;  // "section.key=value", applied in order
   double until_length = 0.0;           // [m] pushed length to reach (0: not given)
   double until_time = 0.0;             // [s] simulated time to reach (0: not given)

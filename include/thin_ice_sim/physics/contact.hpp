@@ -158,6 +158,8 @@ TIS_HD PairForce demContactForce(const PolygonOverlap& overlap, const BodyState&
   const double slip_z = j.vz - i.vz;
   const double slip_mass = 1.0 / (inverseSlipMass(i, overlap.centroid) + inverseSlipMass(j, overlap.centroid));
   const double scale_limit = c.friction_rate_limit * slip_mass;
+  // Two branches, not one formula for both readings: written as one, the fused multiply-adds
+  // round differently, and the committed runs no longer reproduce to the bit (tried 2026-12-02).
   if (side != 0.0 && c.vertical_slip_friction == kVerticalSlipEdgeFace) {
     // The edge face (normal n, force F_n) resists the slip along it in 3-D; the top and bottom
     // faces (normal z, force F_v) the horizontal slip. Their sum on the horizontal slip stays
