@@ -100,6 +100,8 @@ def compare_plot(root, sid, names, histories):
 EXPERIMENT_MEAN = {"W": 8600.0, "M": 7820.0, "S": 13750.0}
 ICE_TYPE = {"W": "weak", "M": "medium", "S": "strong"}
 WINDOW_M = 0.5  # width of the windows in which the long runs' loads are averaged [m]
+READING = "edge_face"  # ice.vertical_slip_friction of the scenarios as they stand
+ARCHIVE = "level_only"  # docs/validation/level_only/: the runs of the reading every run had until 2026-12-02
 
 
 def window_means(history, width):
@@ -118,66 +120,74 @@ def window_means(history, width):
     return out
 
 
-LONG_RUN = re.compile(r"[WMS]-\d(-[a-z]\w*)?-long")  # group 1: the variant ("-edge"), or None
+LONG_RUN = re.compile(r"[WMS]-\d(-[a-z]\w*)?-long")  # group 1: a variant of the reading ("-plate"), or None
 
 
-def long_runs_section(root, runs, histories, rel):
-    """The runs past the matrix's length (named ID-long, or ID-VARIANT-long for a run of another
-    reading, e.g. W-3-edge-long): their mean load per 0.5 m of pushed length, the weak-above-medium
-    comparison window by window at equal L (between runs of the same variant), and one plot."""
-    names = sorted(n for n in runs if LONG_RUN.fullmatch(n) and histories.get(n)
-                   and window_means(histories[n], WINDOW_M))
-    if not names:
+def long_run_entries(runs, histories, reading):
+    """The runs past the matrix's length (named ID-long, or ID-VARIANT-long) among `runs`, each with
+    its history and the model it ran: the reading of ice.vertical_slip_friction and the variant."""
+    return [{"name": n, "label": n if reading == READING else f"{n} ({reading})", "summary": runs[n],
+             "history": histories[n], "model": (reading, LONG_RUN.fullmatch(n).group(1))}
+            for n in sorted(runs)
+            if LONG_RUN.fullmatch(n) and histories.get(n) and window_means(histories[n], WINDOW_M)]
+
+
+def long_runs_section(root, entries, rel):
+    """The long runs of long_run_entries: their mean load per 0.5 m of pushed length, the
+    weak-above-medium comparison window by window at equal L (between runs of the same model), and
+    one plot (runs of another model than the scenarios' dotted)."""
+    if not entries:
         return ["## Long runs", "", "None yet (`scripts/validate --series ID --tag long --until-length L`).", ""]
-    means = {n: window_means(histories[n], WINDOW_M) for n in names}
+    means = {e["label"]: window_means(e["history"], WINDOW_M) for e in entries}
     count = max(max(m) for m in means.values()) + 1
     header = " | ".join(f"{k * WINDOW_M:.1f}-{(k + 1) * WINDOW_M:.1f} m" for k in range(count))
     lines = ["## Long runs: mean load per 0.5 m of pushed ice", "",
              f"Mean F_cal [N] in each {WINDOW_M} m window of pushed length L (a last window is shown when the run "
              "covers at least half of it, with the length reached in brackets). Experiment: the steady-state mean "
-             "of Table 6, scaled to the run's width.", "",
+             "of Table 6, scaled to the run's width. Runs marked (level_only) ran before the scenarios took "
+             "edge_face friction (docs/validation/level_only/).", "",
              f"| run | L reached [m] | {header} | experiment's steady mean [N] |",
              "|---|---:|" + "---:|" * count + "---:|"]
-    for n in names:
+    for e in entries:
+        n, s = e["label"], e["summary"]
         cells = []
         for k in range(count):
             w = means[n].get(k)
             cells.append("-" if w is None else
                          f"{w[2]:.0f}" + ("" if w[1] - w[0] > WINDOW_M - 1e-9 else f" (to {w[1]:.2f})"))
-        scale = (runs[n].get("experiment") or {}).get("width_scale", 1.0) or 1.0
-        lines.append(f"| {n} | {runs[n].get('pushed_length_m', 0):.3f} | " + " | ".join(cells) +
+        scale = (s.get("experiment") or {}).get("width_scale", 1.0) or 1.0
+        lines.append(f"| {n} | {s.get('pushed_length_m', 0):.3f} | " + " | ".join(cells) +
                      f" | {EXPERIMENT_MEAN[n[0]] * scale:.0f} |")
     lines.append("")
     # Weak above medium, as the experiment has it: compared window by window at equal L.
-    weak = [n for n in names if n[0] == "W"]
-    medium = [n for n in names if n[0] == "M"]
-    for w in weak:
-        for m in medium:
-            if LONG_RUN.fullmatch(w).group(1) != LONG_RUN.fullmatch(m).group(1):
-                continue  # another reading: not the same model
-            pairs = [(means[w][k], means[m][k]) for k in sorted(set(means[w]) & set(means[m]))
-                     if means[w][k][1] - means[w][k][0] > WINDOW_M - 1e-9
-                     and means[m][k][1] - means[m][k][0] > WINDOW_M - 1e-9 and means[m][k][2] != 0.0]
+    for w in (e for e in entries if e["name"][0] == "W"):
+        for m in (e for e in entries if e["name"][0] == "M"):
+            if w["model"] != m["model"]:
+                continue  # another reading or variant: not the same model
+            mw, mm = means[w["label"]], means[m["label"]]
+            pairs = [(mw[k], mm[k]) for k in sorted(set(mw) & set(mm))
+                     if mw[k][1] - mw[k][0] > WINDOW_M - 1e-9
+                     and mm[k][1] - mm[k][0] > WINDOW_M - 1e-9 and mm[k][2] != 0.0]
             if not pairs:
                 continue
             above = sum(1 for a, b in pairs if a[2] > b[2])
             ratios = ", ".join(f"{a[0]:.1f}-{a[1]:.1f} m: {a[2] / b[2]:.2f}" for a, b in pairs)
-            lines += [f"Weak above medium ({w} against {m}, whole windows at equal L): weak is higher in {above} "
-                      f"of {len(pairs)} windows; ratio weak / medium by window: {ratios}. The experiment's steady "
-                      f"states give {EXPERIMENT_MEAN['W'] / EXPERIMENT_MEAN['M']:.2f}.", ""]
+            lines += [f"Weak above medium ({w['label']} against {m['label']}, whole windows at equal L): weak is "
+                      f"higher in {above} of {len(pairs)} windows; ratio weak / medium by window: {ratios}. The "
+                      f"experiment's steady states give {EXPERIMENT_MEAN['W'] / EXPERIMENT_MEAN['M']:.2f}.", ""]
     plt = pyplot()
     if plt is not None:
         fig, ax = plt.subplots(figsize=(10, 4.8))
         colours = {"W": "#1f77b4", "M": "#ff7f0e", "S": "#2ca02c"}
         drawn_experiment = set()
-        for n in names:
-            h, c = histories[n], colours[n[0]]
-            variant = LONG_RUN.fullmatch(n).group(1)
-            ax.plot(h["lengths"], h["loads"], color=c, lw=0.5, alpha=0.35 if not variant else 0.2)
+        for e in entries:
+            n, h, c = e["label"], e["history"], colours[e["name"][0]]
+            other = e["model"] != (READING, None)
+            ax.plot(h["lengths"], h["loads"], color=c, lw=0.5, alpha=0.2 if other else 0.35)
             windows = [means[n][k] for k in sorted(means[n])]
             ax.step([a for a, _, _ in windows] + [windows[-1][1]], [v for _, _, v in windows] + [windows[-1][2]],
-                    where="post", color=c, lw=2, ls=":" if variant else "-", label=f"{n}: mean per {WINDOW_M} m")
-            scale = (runs[n].get("experiment") or {}).get("width_scale", 1.0) or 1.0
+                    where="post", color=c, lw=2, ls=":" if other else "-", label=f"{n}: mean per {WINDOW_M} m")
+            scale = (e["summary"].get("experiment") or {}).get("width_scale", 1.0) or 1.0
             if (n[0], scale) not in drawn_experiment:
                 drawn_experiment.add((n[0], scale))
                 ax.axhline(EXPERIMENT_MEAN[n[0]] * scale, color=c, ls="--", lw=1,
@@ -323,39 +333,18 @@ def alpha_text(runs):
     return "alpha = " + ", ".join(f"{a:g}" for a in alphas) + " (differs between runs; see each run's summary.json)"
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
-    p.add_argument("--runs", required=True)
-    p.add_argument("--out", required=True)
-    a = p.parse_args()
-    runs = load_runs(a.runs)
-    rel = os.path.relpath(a.runs, os.path.dirname(os.path.abspath(a.out)))
-    lines = ["# Validation against the shallow-water experiments", "",
-             "Regenerated by `scripts/validate` from the runs in docs/validation/ (each run's summary.json",
-             "and load plot). Experiment: Lemström and Polojärvi's model-scale tests, paper Tables 4-6. Loads",
-             f"are the calibrated horizontal load F_cal = alpha F (Eq. 18; {alpha_text(runs)}); a run on a structure",
-             "narrower than the experiment's 10 m is compared per metre of width (the experiment's loads are",
-             "scaled by width / 10 m). The steady state is found by the rule written in",
-             "`include/thin_ice_sim/load_statistics.hpp`; where the rule finds none, the mean of the last",
-             "quarter of the record is shown and marked \"tail mean, not steady\": that is not a steady-state",
-             "load. The phase-1 slope is the least-squares slope of F_cal against L from the first failure",
-             "(from the end of that failure's collapse: the pile begins there) to the start of the steady window;",
-             "its error is given only where there is a steady window.",
-             f"Targets (issue #6): {TARGETS}.", "",
-             "## Table 6 layout: model against experiment", "",
-             "| run | cells | width [m] | backend | dt [s] / structure sub-steps | L reached of experiment [m] |"
+def table6(runs):
+    """The Table 6 layout: one row per run."""
+    return (["| run | cells | width [m] | backend | dt [s] / structure sub-steps | L reached of experiment [m] |"
              " F_p model [N] | F_p exp. [N] | error |"
              " F_avg model [N] | F_avg exp. [N] | error | phase-1 slope model [N/m] | exp. [N/m] | error |",
              "|---|---:|---:|---|---:|---:|---:|---:|---:|---|---:|---:|---:|---:|---:|"]
-    for name in sorted(runs):
-        lines.append(row(name, runs[name]))
-    missing = [sid for sid in SERIES if sid not in runs]
-    lines += ["", f"Series without a run yet: {', '.join(missing) if missing else 'none'}.", "",
-              "The paper's own TIM runs (Table 6) for comparison: "
-              + "; ".join(f"{k}: F_p {v[0]} N, F_avg {v[1]} N" for k, v in PAPER_TIM.items()) + ".", ""]
+            + [row(name, runs[name]) for name in sorted(runs)])
 
-    # Seed spread and resolution checks.
-    histories = {n: record(a.runs, n, runs[n]) for n in runs}
+
+def seeds_and_resolution(root, runs, histories, rel, level="##"):
+    """The spread over Voronoi seeds (ID, ID-seedK), the resolution checks (ID-fine, ID-halfdt,
+    ID-singlerate against ID) and one plot per series of its base run and variants."""
     spread, tail_spreads = [], []
     for sid in SERIES:
         names = [n for n in runs if re.fullmatch(re.escape(sid) + r"(-seed\d+)?", n)]
@@ -372,7 +361,7 @@ def main():
             spread.append(f"| {sid} | {len(seeds)} | {spread_text(peaks)} | "
                           f"{spread_text(record_means) if len(record_means) >= 2 else '-'} | {spread_text(means)} | "
                           + (f"{min(failures):.4f} - {max(failures):.4f}" if failures else "-") + " |")
-    lines += ["## Spread from the Voronoi mesh alone (seeds)", ""]
+    lines = [f"{level} Spread from the Voronoi mesh alone (seeds)", ""]
     lines += (["| series | runs | F_p mean +- std [N] | mean F_cal over the record [N] | F_avg (tail mean where not steady) [N] "
                "| first broken bond at L [m] |", "|---|---:|---:|---:|---:|---:|"] + spread
               if spread else ["Not run yet (`scripts/validate --series ID --seeds 2,3`)."])
@@ -400,7 +389,7 @@ def main():
                 res.append(f"| {sid} | {what} | {pct(v['peak_N'], b['peak_N'])} | "
                            f"{num(b.get('peak_at_m'), '{:.4f}')} / {num(v.get('peak_at_m'), '{:.4f}')} | {failure} | "
                            f"{record_mean} | {pct(v['steady_mean_N'], b['steady_mean_N'])} | {broken} |")
-    lines += ["## Resolution checks (change against the base run of the series)", ""]
+    lines += [f"{level} Resolution checks (change against the base run of the series)", ""]
     lines += (["Base / variant where two values are given. A change counts as a resolution effect only where it is",
                "larger than the spread of the same series over Voronoi seeds (above): F_p, its position and the",
                "first failure are sharp; the tail mean's standard deviation over seeds is "
@@ -410,53 +399,111 @@ def main():
                "|---|---|---:|---:|---:|---:|---:|---:|"] + res
               if res else ["Not run yet (`scripts/validate --series ID --resolution`)."])
     lines.append("")
-    plots = []
     for sid in SERIES:
         names = sorted(n for n in runs if histories.get(n) and
                        re.fullmatch(re.escape(sid) + r"(-seed\d+|-fine|-halfdt|-singlerate)?", n))
-        if sid in names and len(names) >= 2:
-            out = compare_plot(a.runs, sid, names, histories)
-            if out:
-                plots += [f"![{sid} and its variants]({rel}/{sid}/variants.png)", ""]
-    lines += plots
+        if sid in names and len(names) >= 2 and compare_plot(root, sid, names, histories):
+            lines += [f"![{sid} and its variants]({rel}/{sid}/variants.png)", ""]
+    return lines
 
-    lines += long_runs_section(a.runs, runs, histories, rel)
 
-    # Rubble pile profiles: strong ice first (the paper's Fig. 15), then the longest run of each
-    # type, of the scenarios' reading and of the edge_face reading of ice.vertical_slip_friction.
-    pile = []
+def profile_runs(runs, strong_first):
+    """The runs whose rubble profiles are shown: strong ice's base runs first where asked (the
+    paper's Fig. 15), then the longest run (ID or ID-long) of each ice type."""
     longest = {}
     for name, summary in runs.items():
-        match = re.fullmatch(r"[WMS]-\d(-edge)?(-long)?", name)
-        kind = (name[0], (match.group(1) or "") if match else "")
-        if match and summary.get("pushed_length_m", 0) > longest.get(kind, ("", 0))[1]:
-            longest[kind] = (name, summary.get("pushed_length_m", 0))
-    shown = [n for n in ("S-1", "S-2") if n in runs] + [v[0] for k, v in sorted(longest.items()) if v[0] not in ("S-1", "S-2")]
-    for name in shown:
-        if profile_plot(a.runs, name, runs[name]):
-            pile += [f"### {name}", "", f"![{name} rubble profiles]({rel}/{name}/profiles.png)", ""]
+        if re.fullmatch(r"[WMS]-\d(-long)?", name) and summary.get("pushed_length_m", 0) > longest.get(name[0], ("", 0))[1]:
+            longest[name[0]] = (name, summary.get("pushed_length_m", 0))
+    first = [n for n in ("S-1", "S-2") if n in runs] if strong_first else []
+    return first + [v[0] for _, v in sorted(longest.items()) if v[0] not in first]
+
+
+def pile_lines(root, runs, names, rel, label=""):
+    lines = []
+    for name in names:
+        if profile_plot(root, name, runs[name]):
+            lines += [f"### {name}{label}", "", f"![{name} rubble profiles]({rel}/{name}/profiles.png)", ""]
             # The ice under the water too, where a side view was drawn (scripts/plot_side_view).
-            if os.path.exists(os.path.join(a.runs, name, "side_view.png")):
-                pile += [f"![{name} cells near the structure, from the side and from above]({rel}/{name}/side_view.png)", ""]
+            if os.path.exists(os.path.join(root, name, "side_view.png")):
+                lines += [f"![{name} cells near the structure, from the side and from above]({rel}/{name}/side_view.png)", ""]
+    return lines
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    p.add_argument("--runs", required=True)
+    p.add_argument("--out", required=True)
+    a = p.parse_args()
+    runs = load_runs(a.runs)
+    rel = os.path.relpath(a.runs, os.path.dirname(os.path.abspath(a.out)))
+    # The runs of the earlier reading, kept apart so that every run above them is of the scenarios as
+    # they stand: docs/validation/level_only/RUN.
+    archive, archive_rel = os.path.join(a.runs, ARCHIVE), f"{rel}/{ARCHIVE}"
+    archived = load_runs(archive) if os.path.isdir(archive) else {}
+    lines = ["# Validation against the shallow-water experiments", "",
+             "Regenerated by `scripts/validate` from the runs in docs/validation/ (each run's summary.json",
+             "and load plot). Experiment: Lemström and Polojärvi's model-scale tests, paper Tables 4-6. Loads",
+             f"are the calibrated horizontal load F_cal = alpha F (Eq. 18; {alpha_text(runs)}); a run on a structure",
+             "narrower than the experiment's 10 m is compared per metre of width (the experiment's loads are",
+             "scaled by width / 10 m). The steady state is found by the rule written in",
+             "`include/thin_ice_sim/load_statistics.hpp`; where the rule finds none, the mean of the last",
+             "quarter of the record is shown and marked \"tail mean, not steady\": that is not a steady-state",
+             "load. The phase-1 slope is the least-squares slope of F_cal against L from the first failure",
+             "(from the end of that failure's collapse: the pile begins there) to the start of the steady window;",
+             "its error is given only where there is a steady window.",
+             f"Targets (issue #6): {TARGETS}.", "",
+             f"Every run in the tables below is of the scenarios as they stand (ice.vertical_slip_friction: {READING}). "
+             f"The runs made before that key entered them (level_only, until 2026-12-02) are in docs/validation/{ARCHIVE}/ "
+             "and in their own section further down." if archived else "", "",
+             "## Table 6 layout: model against experiment", ""]
+    lines += table6(runs)
+    missing = [sid for sid in SERIES if sid not in runs]
+    lines += ["", f"Series without a run yet: {', '.join(missing) if missing else 'none'}.", "",
+              "The paper's own TIM runs (Table 6) for comparison: "
+              + "; ".join(f"{k}: F_p {v[0]} N, F_avg {v[1]} N" for k, v in PAPER_TIM.items()) + ".", ""]
+
+    histories = {n: record(a.runs, n, runs[n]) for n in runs}
+    archived_histories = {n: record(archive, n, archived[n]) for n in archived}
+    lines += seeds_and_resolution(a.runs, runs, histories, rel)
+    lines += long_runs_section(a.runs, long_run_entries(runs, histories, READING) +
+                               long_run_entries(archived, archived_histories, ARCHIVE), rel)
+
+    pile = pile_lines(a.runs, runs, profile_runs(runs, strong_first=True), rel)
+    pile += pile_lines(archive, archived, profile_runs(archived, strong_first=False), archive_rel, f" ({ARCHIVE})")
     lines += ["## Rubble pile profiles", ""]
     lines += (["The ice above the waterline at the end of each run: strong ice (S-1, S-2), as the paper's",
-               "Fig. 15 asks, and the longest run of each ice type. Heights are cell tops (z + h/2; cells do not",
-               "tilt in this 2.5-D model); the top view bins by cell centroid, so it is good to about a cell radius.",
-               "Where a run has a side view (scripts/plot_side_view, from its last snapshot), it shows every cell",
-               "near the structure, under the waterline as well.",
+               "Fig. 15 asks, and the longest run of each ice type (of the earlier reading too, marked level_only).",
+               "Heights are cell tops (z + h/2; cells do not tilt in this 2.5-D model); the top view bins by cell",
+               "centroid, so it is good to about a cell radius. Where a run has a side view (scripts/plot_side_view,",
+               "from its last snapshot), it shows every cell near the structure, under the waterline as well.",
                ""] + pile if pile else ["No run with profiles.csv yet."])
     lines.append("")
 
     # Where the broken ice went, counted per snapshot (scripts/ice_layers --plot / --csv).
-    layer_plots = sorted(n for n in os.listdir(a.runs) if re.fullmatch(r"layers_[\w-]+\.png", n))
-    if layer_plots:
-        numbers = (f"; the numbers are in [layers.csv]({rel}/layers.csv)"
-                   if os.path.exists(os.path.join(a.runs, "layers.csv")) else "")
+    layer_sections = []
+    for root, root_rel, label in ((a.runs, rel, ""), (archive, archive_rel, f" ({ARCHIVE})")):
+        if not os.path.isdir(root):
+            continue
+        layer_plots = sorted(n for n in os.listdir(root) if re.fullmatch(r"layers_[\w-]+\.png", n))
+        if layer_plots:
+            numbers = (f"; the numbers are in [layers.csv]({root_rel}/layers.csv)"
+                       if os.path.exists(os.path.join(root, "layers.csv")) else "")
+            layer_sections += [f"Runs{label}{numbers}:", ""] + [f"![{n[:-4]}{label}]({root_rel}/{n})" for n in layer_plots] + [""]
+    if layer_sections:
         lines += ["## Where the broken ice goes: under or over the sheet", "",
                   "Per snapshot, the broken ice more than h/2 under and over the sheet's floating level and the",
                   "sheet's own cells pressed down (the sheet: the largest piece held together by intact bonds),",
-                  f"drawn by scripts/ice_layers{numbers}. The runs and what they show: the calibration notes below.", ""]
-        lines += [f"![{n[:-4]}]({rel}/{n})" for n in layer_plots] + [""]
+                  "drawn by scripts/ice_layers. The runs and what they show: the calibration notes below.", ""]
+        lines += layer_sections
+
+    if archived:
+        lines += [f"## The runs of the earlier reading (ice.vertical_slip_friction: {ARCHIVE})", "",
+                  "Until 2026-12-02 every run let two cells at different heights slide past each other vertically",
+                  "without friction (docs/model.md, \"DEM contacts\"). These runs, their seeds, resolution checks and",
+                  f"experiments are kept in docs/validation/{ARCHIVE}/ under the names the calibration notes below",
+                  "give them; their scenario files have since changed, so they are history, not the model.", ""]
+        lines += table6(archived) + [""]
+        lines += seeds_and_resolution(archive, archived, archived_histories, archive_rel, level="###")
 
     calibration = os.path.join(a.runs, "calibration.md")
     if os.path.exists(calibration):
@@ -464,9 +511,10 @@ def main():
             lines += [f.read().rstrip(), ""]
 
     lines += ["## Load histories", ""]
-    for name in sorted(runs):
-        if os.path.exists(os.path.join(a.runs, name, "load.png")):
-            lines += [f"### {name}", "", f"![{name}]({rel}/{name}/load.png)", ""]
+    for root, root_rel, group, label in ((a.runs, rel, runs, ""), (archive, archive_rel, archived, f" ({ARCHIVE})")):
+        for name in sorted(group):
+            if os.path.exists(os.path.join(root, name, "load.png")):
+                lines += [f"### {name}{label}", "", f"![{name}{label}]({root_rel}/{name}/load.png)", ""]
     path = a.out
     with open(path + ".partial", "w") as f:
         f.write("\n".join(lines))
