@@ -143,27 +143,41 @@ TIS_HD PolygonOverlap intersectOrdered(const Vec2* first, int n_first, const Vec
     clip[k] = {llrint((second[k].x - origin.x) * scale), llrint((second[k].y - origin.y) * scale)};
   }
   // Working polygon, and for each vertex k the owner of the edge k -> k+1
-  // (0: boundary of `first`, 1: boundary of `second`).
-  GridPoint poly[kClipCapacity];
-  unsigned char owner[kClipCapacity];
+  // (0: boundary of `first`, 1: boundary of `second`). Two buffers, swapped after each clip edge.
+  GridPoint buffer_poly[2][kClipCapacity];
+  unsigned char buffer_owner[2][kClipCapacity];
+  GridPoint* poly = buffer_poly[0];
+  unsigned char* owner = buffer_owner[0];
+  GridPoint* next_poly = buffer_poly[1];
+  unsigned char* next_owner = buffer_owner[1];
   int count = n_first;
   for (int k = 0; k < n_first; ++k) {
     poly[k] = {llrint((first[k].x - origin.x) * scale), llrint((first[k].y - origin.y) * scale)};
     owner[k] = 0;
   }
 
-  GridPoint next_poly[kClipCapacity];
-  unsigned char next_owner[kClipCapacity];
+  // side[k]: orientation of working vertex k against the current clip edge, each computed once
+  // (vertex k is the end of edge k-1 and the start of edge k).
+  long long side[kClipCapacity];
   for (int e = 0; e < n_second && count > 0; ++e) {
     const GridPoint a = clip[e];
-    const GridPoint b = clip[(e + 1) % n_second];
+    const GridPoint b = clip[e + 1 < n_second ? e + 1 : 0];
     if (a.x == b.x && a.y == b.y) continue;  // duplicate vertex of `second`: no half-plane
+    bool all_inside = true;
+    for (int k = 0; k < count; ++k) {
+      side[k] = orientation(a, b, poly[k]);
+      all_inside = all_inside && side[k] >= 0;
+    }
+    // Nothing strictly outside: the pass below would copy every vertex and owner unchanged
+    // (an owner changes only at a vertex on the line whose successor is outside).
+    if (all_inside) continue;
     int out = 0;
     for (int k = 0; k < count; ++k) {
+      const int k_next = k + 1 < count ? k + 1 : 0;
       const GridPoint p = poly[k];
-      const GridPoint q = poly[(k + 1) % count];
-      const long long sp = orientation(a, b, p);
-      const long long sq = orientation(a, b, q);
+      const GridPoint q = poly[k_next];
+      const long long sp = side[k];
+      const long long sq = side[k_next];
       if (sp >= 0) {
         if (out < kClipCapacity) {
           next_poly[out] = p;
@@ -187,10 +201,12 @@ TIS_HD PolygonOverlap intersectOrdered(const Vec2* first, int n_first, const Vec
       }
     }
     count = out;
-    for (int k = 0; k < count; ++k) {
-      poly[k] = next_poly[k];
-      owner[k] = next_owner[k];
-    }
+    GridPoint* const spare_poly = poly;
+    unsigned char* const spare_owner = owner;
+    poly = next_poly;
+    owner = next_owner;
+    next_poly = spare_poly;
+    next_owner = spare_owner;
   }
   if (count < 3) return emptyOverlap();
 
