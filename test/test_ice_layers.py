@@ -18,6 +18,8 @@ from quick_strip import refusal_problem
 # its centroid at z_rest = 0.05 - 0.09 = -0.04 m; below: z < -0.09 m, above: z > +0.01 m.
 # With the override ice.thickness=0.2 instead: z_rest = 0.1 - 0.18 = -0.08 m; below: z < -0.18 m,
 # above: z > +0.02 m.
+COLUMNS = ["run", "pushed_length_m", "cells_below", "sheet_cells_below", "cells_above", "sheet_cells_above",
+           "free_blocks", "sheet_cells", "farthest_broken_below_from_toe_m"]
 SCENARIO = "ice:\n  thickness: 0.1\n  density: 900\nwater:\n  density: 1000\n"
 TOE_X = 10.0
 # (x [m], z [m], bonded, cells in its bonded piece). The sheet is the largest piece: cells 0, 5, 6.
@@ -86,6 +88,27 @@ def main():
                 failures.append(f"two runs: CSV {lines}")
             if not os.path.exists(png) or os.path.getsize(png) < 10000:
                 failures.append("two runs: --plot wrote no picture")
+        # --earlier: a resumed run's earlier legs come from an earlier --csv (rows of that run at
+        # shorter L than its first snapshot, in order; a row at or past it and other runs' rows are
+        # left out), and a CSV with other columns is refused.
+        earlier_csv, merged_csv = os.path.join(tmp, "earlier.csv"), os.path.join(tmp, "merged.csv")
+        with open(earlier_csv, "w") as f:
+            f.write(",".join(COLUMNS) + "\n" + "plain,0.3000,1,0,0,0,0,5,0.000\n"
+                    + "plain,0.1000,0,0,0,0,0,6,0.000\n" + "plain,0.5000,9,9,9,9,9,9,9.000\n"
+                    + "other,0.2000,7,7,7,7,7,7,7.000\n")
+        done = run(script, [os.path.join(tmp, "plain"), "--earlier", earlier_csv, "--csv", merged_csv, "--plot", png])
+        if done.returncode != 0:
+            failures.append(f"--earlier: exit status {done.returncode}, stderr {done.stderr.strip()!r}")
+        else:
+            lines = open(merged_csv).read().splitlines()
+            if lines[1:] != ["plain,0.1000,0,0,0,0,0,6,0.000", "plain,0.3000,1,0,0,0,0,5,0.000",
+                             "plain,0.5000,3,1,2,0,2,3,2.500"]:
+                failures.append(f"--earlier: CSV {lines}")
+        with open(earlier_csv, "w") as f:
+            f.write("run,pushed_length_m\nplain,0.1\n")
+        problem = refusal_problem([script, os.path.join(tmp, "plain"), "--earlier", earlier_csv], "--earlier")
+        if problem:
+            failures.append(f"--earlier with other columns: {problem}")
         bad = os.path.join(tmp, "bad")
         make_run(bad, ["water.density=800"])  # lighter than the ice: nothing floats
         for args, needle in (([os.path.join(tmp, "none")], "not a finished run"),
