@@ -323,6 +323,83 @@ def row(name, s):
             f"{slope_text} | {num(slope_ref)} | {slope_error} |")
 
 
+# Issue #6's tolerances: steady-state mean, peak and phase-1 slope, as fractions of the experiment's.
+TOLERANCE = {"steady": 0.10, "peak": 0.25, "slope": 0.25}
+SERIES_RUN = re.compile(r"([WMS])-\d(-long)?")  # a series as its scenario stands, to 0.5 m or longer
+
+
+def verdict(model, reference, tolerance):
+    """'met' or 'missed' for model against reference within +-tolerance (a fraction)."""
+    return "met" if abs(model - reference) <= tolerance * abs(reference) else "missed"
+
+
+def targets_at_a_glance(runs):
+    """Per ice type, the targets of issue #6 judged on the longest run of that type (the others of
+    the type are shorter: their loads are of an earlier phase), and weak against medium from those
+    runs' steady means."""
+    longest, others = {}, {}
+    for name, s in runs.items():
+        m = SERIES_RUN.fullmatch(name)
+        if not m or not s.get("load"):
+            continue
+        kind = m.group(1)
+        others.setdefault(kind, []).append(name)
+        best = longest.get(kind)
+        if best is None or s.get("pushed_length_m", 0.0) > runs[best].get("pushed_length_m", 0.0):
+            longest[kind] = name
+    if not longest:
+        return []
+    lines = ["## Targets at a glance", "",
+             "Each ice type judged on its longest run (the runs to 0.5 m end in the first failures, before",
+             "any pile: their numbers are in the tables below). Steady mean and phase-1 slope count only where",
+             "the rule in the code found a steady window; otherwise the tail mean is shown, not judged.", "",
+             "| ice | run | L reached [m] | steady mean [N] (exp.) | error | +-10 % | peak [N] (exp.) | error | +-25 % |"
+             " phase-1 slope [N/m] (exp.) | error | +-25 % |",
+             "|---|---|---:|---:|---:|---|---:|---:|---|---:|---:|---|"]
+    steady_means = {}
+    for kind in ("W", "M", "S"):
+        if kind not in longest:
+            lines.append(f"| {ICE_TYPE[kind]} | none | - | - | - | - | - | - | - | - | - | - |")
+            continue
+        name = longest[kind]
+        s = runs[name]
+        load, exp = s["load"], s.get("experiment") or {}
+        scale = exp.get("width_scale", 1.0) or 1.0
+        mean, peak, slope = load.get("steady_mean_N"), load.get("peak_N"), load.get("phase1_slope_N_per_m")
+        exp_mean, exp_peak, exp_slope = exp.get("steady_mean_N"), exp.get("peak_N"), 1500.0 * scale
+        if load.get("steady_found"):
+            steady_means[kind] = mean / scale
+            mean_cells = (f"{num(mean)} ({num(exp_mean)})", pct(mean, exp_mean), verdict(mean, exp_mean, TOLERANCE["steady"]))
+            slope_cells = (f"{num(slope)} ({num(exp_slope)})", pct(slope, exp_slope),
+                           verdict(slope, exp_slope, TOLERANCE["slope"]))
+        else:
+            mean_cells = (f"tail mean {num(mean)} ({num(exp_mean)})", pct(mean, exp_mean), "no steady window")
+            slope_cells = (f"{num(slope)} ({num(exp_slope)})", "-", "no steady window")
+        peak_cells = (f"{num(peak)} ({num(exp_peak)})", pct(peak, exp_peak), verdict(peak, exp_peak, TOLERANCE["peak"]))
+        lines.append(f"| {ICE_TYPE[kind]} | {name} | {num(s.get('pushed_length_m'), '{:.2f}')} | "
+                     + " | ".join(mean_cells + peak_cells + slope_cells) + " |")
+    lines.append("")
+    if "W" in steady_means and "M" in steady_means:
+        ratio = steady_means["W"] / steady_means["M"]
+        lines.append(f"Weak above medium in steady state: {longest['W']} / {longest['M']} = {ratio:.2f} "
+                     f"({'met' if ratio > 1.0 else 'missed'}; the experiment: "
+                     f"{EXPERIMENT_MEAN['W'] / EXPERIMENT_MEAN['M']:.2f}).")
+    else:
+        lines.append("Weak above medium in steady state: not judged (the longest weak and medium runs do not both "
+                     "have a steady window).")
+    shorter = []
+    for kind in ("W", "M", "S"):
+        for name in sorted(others.get(kind, [])):
+            if name != longest.get(kind):
+                s = runs[name]
+                shorter.append(f"{name} ({num(s.get('pushed_length_m'), '{:.2f}')} m, peak "
+                               f"{pct(s['load'].get('peak_N'), (s.get('experiment') or {}).get('peak_N'))})")
+    if shorter:
+        lines.append("")
+        lines.append("Not judged above, shorter runs of the same types: " + ", ".join(shorter) + ".")
+    return lines + [""]
+
+
 def alpha_text(runs):
     """The structural factor alpha of Eq. (18) that the runs' F_cal carries, as summary.json records it."""
     alphas = sorted({s.get("calibration_factor") for s in runs.values() if s.get("calibration_factor") is not None})
@@ -455,7 +532,9 @@ def main():
              f"Every run in the tables below is of the scenarios as they stand (ice.vertical_slip_friction: {READING}). "
              f"The runs made before that key entered them (level_only, until 2026-12-02) are in docs/validation/{ARCHIVE}/ "
              "and in their own section further down." if archived else "", "",
-             "## Table 6 layout: model against experiment", ""]
+             ]
+    lines += targets_at_a_glance(runs)
+    lines += ["## Table 6 layout: model against experiment", ""]
     lines += table6(runs)
     missing = [sid for sid in SERIES if sid not in runs]
     lines += ["", f"Series without a run yet: {', '.join(missing) if missing else 'none'}.", "",
