@@ -1,11 +1,12 @@
 #!/usr/bin/python3
 """scripts/reanalyse with thin_ice_analyse against thin_ice_run's own summary: the statistics
 worked out again from a finished run's loads.csv must be those the run wrote at its end (to the
-nine digits of loads.csv), the first failure included; a summary whose statistics were spoiled
+nine digits of loads.csv), the first failure included, and scripts/steady_by_length's last row too; a summary whose statistics were spoiled
 gets them back; a directory that is not a finished run is refused and left alone.
 
     test_reanalyse.py THIN_ICE_RUN THIN_ICE_ANALYSE SOURCE_DIR
 """
+import csv
 import json
 import os
 import shutil
@@ -58,6 +59,32 @@ def main():
             failures.append(f"reanalyses: {again.get('reanalyses')}")
         if any(again.get(k) != original.get(k) for k in original if k not in ("load", "experiment")):
             failures.append("a part of summary.json other than load and experiment changed")
+
+        # scripts/steady_by_length: cuts at a third and two thirds of the record, then its end. The
+        # end's row is the run's own verdict; a cut's peak is the largest F_cal up to the cut, read
+        # here from loads.csv.
+        end = original["pushed_length_m"]
+        step = end / 3.0
+        by_length = subprocess.run([sys.executable, os.path.join(source, "scripts/steady_by_length"), run,
+                                    "--step", repr(step), "--tool", analyse_tool],
+                                   stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=300)
+        table = [line for line in by_length.stdout.splitlines() if line.startswith("| ") and line[2].isdigit()]
+        if by_length.returncode != 0 or len(table) != 3:
+            failures.append(f"steady_by_length: exit {by_length.returncode}, rows {table}, {by_length.stderr.strip()!r}")
+        else:
+            cells = [[c.strip() for c in line.strip("|").split("|")] for line in table]
+            with open(os.path.join(run, "loads.csv")) as f:
+                rows = list(csv.DictReader(f))
+            first_peak = max(float(r["horizontal_calibrated_N"]) for r in rows
+                             if float(r["pushed_length_m"]) <= step + 1e-9)
+            want_end = ["found" if original["load"]["steady_found"] else "none",
+                        f"{original['load']['steady_mean_N']:.0f}", f"{original['load']['peak_N']:.0f}"]
+            if [cells[2][1], cells[2][3], cells[2][5]] != want_end:
+                failures.append(f"steady_by_length at the end: {cells[2]} against the run's {want_end}")
+            if first_peak >= original["load"]["peak_N"]:
+                failures.append("the strip's peak lies in its first third: a cut that is ignored would not be seen")
+            if cells[0][5] != f"{first_peak:.0f}" or abs(float(cells[0][0]) - step) > 1e-3:
+                failures.append(f"steady_by_length at {step:.3f} m: {cells[0]}, peak up to the cut {first_peak:.0f}")
 
         # Refused, and left alone: a run still writing, and a directory without a summary.
         partial = os.path.join(tmp, "partial")
