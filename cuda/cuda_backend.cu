@@ -181,6 +181,9 @@ class CudaBackend final : public Backend {
     mass_.upload(model.mass);
     inertia_.upload(model.inertia);
     area_.upload(model.area);
+    inverse_mass_.upload(model.inverse_mass);
+    inverse_inertia_.upload(model.inverse_inertia);
+    polar_moment_.upload(model.polar_moment);
     radius_.upload(model.radius);
     bond_i_.upload(model.bond_i);
     bond_j_.upload(model.bond_j);
@@ -343,6 +346,9 @@ class CudaBackend final : public Backend {
     const CellStepInputs in = {mass_.get(),
                                inertia_.get(),
                                area_.get(),
+                               inverse_mass_.get(),
+                               inverse_inertia_.get(),
+                               polar_moment_.get(),
                                vertex_count_.get(),
                                vertex_x_.get(),
                                vertex_y_.get(),
@@ -429,6 +435,7 @@ class CudaBackend final : public Backend {
   RunScalars* run_host_ = nullptr;  ///< pinned
   // Fixed model.
   DeviceArray<double> vertex_x_, vertex_y_, mass_, inertia_, area_, radius_;
+  DeviceArray<double> inverse_mass_, inverse_inertia_, polar_moment_;
   DeviceArray<int> vertex_count_, bond_i_, bond_j_, bond_offsets_, bond_entries_;
   DeviceArray<BondRest> bond_rest_;
   // State.

@@ -55,6 +55,7 @@ struct LoneCell {
   double vertex_x[kMaxPolygonVertices] = {-0.5 * kSide, 0.5 * kSide, 0.5 * kSide, -0.5 * kSide};
   double vertex_y[kMaxPolygonVertices] = {-0.5 * kSide, -0.5 * kSide, 0.5 * kSide, 0.5 * kSide};
   double mass = kMass, inertia = kInertia, area = kSide * kSide;
+  double inverse_mass = 1.0 / kMass, inverse_inertia = 1.0 / kInertia, polar_moment = kInertia / (kMass / area);
   int vertex_count = 4;
   Vec2 world[kMaxPolygonVertices];
   double box[4];
@@ -83,10 +84,11 @@ struct LoneCell {
 
   void step(const ModelConstants& c) {
     placeCell(motion, vertex_x, vertex_y, vertex_count, world, box);
-    const CellStepInputs in = {&mass,         &inertia,     &area,       &vertex_count, vertex_x,
-                               vertex_y,      world,        box,         bond_offsets,  bond_entries,
-                               bond_state,    bond_load,    contact_offsets, nullptr,   nullptr,
-                               nullptr};
+    const CellStepInputs in = {&mass,           &inertia,        &area,         &inverse_mass,
+                               &inverse_inertia, &polar_moment,   &vertex_count, vertex_x,
+                               vertex_y,        world,           box,           bond_offsets,
+                               bond_entries,    bond_state,      bond_load,     contact_offsets,
+                               nullptr,         nullptr,         nullptr};
     StructureContact s;
     const CellStepResult r = stepCell(0, c, in, -100.0, 0.0, kRunawaySpeed, reference, motion, s);
     ASSERT_FALSE(r.blown);

@@ -23,6 +23,11 @@ struct Model {
   std::vector<double> area;             ///< (cells) [m^2]
   std::vector<double> mass;             ///< (cells) [kg]
   std::vector<double> inertia;          ///< (cells) yaw inertia rho h J [kg m^2]
+  // Derived once here so that no step divides by them: 1 / mass [1/kg], 1 / inertia
+  // [1/(kg m^2)] and inertia / (mass / area) [m^4] (the second moment of area of the yaw drag,
+  // Eq. 16), each computed by the same expression the step used to evaluate, so the results do
+  // not change by a bit.
+  std::vector<double> inverse_mass, inverse_inertia, polar_moment;
   std::vector<double> radius;           ///< (cells) farthest vertex from the centroid [m]
   // Bonds, (bonds): the two cells (i < j) and what they remember from t = 0.
   std::vector<int> bond_i, bond_j;

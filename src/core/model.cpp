@@ -103,6 +103,9 @@ Model buildModel(const Params& params, const IceSheet& sheet, const std::string&
   m.area.resize(n);
   m.mass.resize(n);
   m.inertia.resize(n);
+  m.inverse_mass.resize(n);
+  m.inverse_inertia.resize(n);
+  m.polar_moment.resize(n);
   m.radius.resize(n);
   m.initial.resize(n);
   const IceParams& ice = params.ice;
@@ -121,6 +124,9 @@ Model buildModel(const Params& params, const IceSheet& sheet, const std::string&
     m.area[k] = c.area;
     m.mass[k] = ice.density * c.area * h;
     m.inertia[k] = ice.density * h * c.polar_moment;
+    m.inverse_mass[k] = 1.0 / m.mass[k];
+    m.inverse_inertia[k] = 1.0 / m.inertia[k];
+    m.polar_moment[k] = m.inertia[k] / (m.mass[k] / m.area[k]);
     m.radius[k] = r;
     largest_radius = std::max(largest_radius, r);
     m.initial[k] = {c.centroid.x, c.centroid.y, z_float, 0.0, 0.0, 0.0, 0.0, 0.0};

@@ -86,6 +86,9 @@ struct CellStepInputs {
   const double* mass;                 ///< (cells) [kg]
   const double* inertia;              ///< (cells) [kg m^2]
   const double* area;                 ///< (cells) [m^2]
+  const double* inverse_mass;         ///< (cells) 1 / mass [1/kg]
+  const double* inverse_inertia;      ///< (cells) 1 / inertia [1/(kg m^2)]
+  const double* polar_moment;         ///< (cells) inertia / (mass / area) [m^4], for the yaw drag
   const int* vertex_count;            ///< (cells)
   const double* vertex_x;             ///< (cells x kMaxPolygonVertices) body-frame vertices [m]
   const double* vertex_y;
@@ -247,6 +250,7 @@ TIS_HD void subcycleStructureContact(int k, const ModelConstants& c, const CellS
                                      StructureContact& s) {
   const int n = in.vertex_count[k];
   const double mass = in.mass[k], inertia = in.inertia[k], area = in.area[k];
+  const double inverse_mass = in.inverse_mass[k], inverse_inertia = in.inverse_inertia[k];
   const int substeps = c.structure_substeps;
   const double sub_dt = c.time_step / substeps, share = 1.0 / substeps;
   const double* box0 = in.box + 4 * k;
@@ -278,7 +282,7 @@ TIS_HD void subcycleStructureContact(int k, const ModelConstants& c, const CellS
     }
     double sx = fx, sy = fy, sz = fz, stz = tz;
     addStructureForces(c, placed, n, motion, mass, inertia, area, first, last, now, sx, sy, sz, stz);
-    integrateSymplecticEuler(motion, sx, sy, sz, stz, 1.0 / mass, 1.0 / inertia, sub_dt);
+    integrateSymplecticEuler(motion, sx, sy, sz, stz, inverse_mass, inverse_inertia, sub_dt);
     s.panel_count = now.panel_count;
     for (int slot = 0; slot < now.panel_count; ++slot) {
       s.fx[slot] += share * now.fx[slot];
@@ -318,7 +322,8 @@ TIS_HD CellStepResult stepCell(int k, const ModelConstants& c, const CellStepInp
     addPairLoad(in.contact_load[p], (in.contact_entries[e] & 1) != 0, fx, fy, fz, tz);
   }
   const double mass = in.mass[k], inertia = in.inertia[k], area = in.area[k];
-  const WaterForce w = waterForce(c.water, mass, area, inertia / (mass / area), m.z, {m.vx, m.vy}, m.vz, m.wz);
+  const double inverse_mass = in.inverse_mass[k], inverse_inertia = in.inverse_inertia[k];
+  const WaterForce w = waterForce(c.water, mass, area, in.polar_moment[k], m.z, {m.vx, m.vy}, m.vz, m.wz);
   fx += w.horizontal.x; fy += w.horizontal.y; fz += w.vertical; tz += w.torque;
   const Vec2* poly = in.world + (size_t)k * kMaxPolygonVertices;
   const int n = in.vertex_count[k];
@@ -334,8 +339,8 @@ TIS_HD CellStepResult stepCell(int k, const ModelConstants& c, const CellStepInp
   double travel = 0.0;
   if (c.structure_substeps > 1) {
     const double size = (box[1] - box[0]) + (box[3] - box[2]);
-    const double speed = fabs(m.vx) + fabs(m.vy) + fabs(m.vz) + (fabs(fx) + fabs(fy) + fabs(fz)) / mass * dt;
-    const double turn_rate = fabs(m.wz) + fabs(tz) / inertia * dt;
+    const double speed = fabs(m.vx) + fabs(m.vy) + fabs(m.vz) + (fabs(fx) + fabs(fy) + fabs(fz)) * inverse_mass * dt;
+    const double turn_rate = fabs(m.wz) + fabs(tz) * inverse_inertia * dt;
     travel = (speed + turn_rate * size) * dt;
   }
   if (c.structure_substeps > 1 && reachesStructure(c, box, z_low, travel)) {
@@ -347,7 +352,7 @@ TIS_HD CellStepResult stepCell(int k, const ModelConstants& c, const CellStepInp
     if (reachesStructure(c, box, z_low, 0.0) && structurePanelRange(c, box[2], box[3], first, last)) {
       addStructureForces(c, poly, n, m, mass, inertia, area, first, last, structure, fx, fy, fz, tz);
     }
-    integrateSymplecticEuler(motion, fx, fy, fz, tz, 1.0 / mass, 1.0 / inertia, dt);
+    integrateSymplecticEuler(motion, fx, fy, fz, tz, inverse_mass, inverse_inertia, dt);
   }
   const CellMotion& a = motion;
   const double speed2 = a.vx * a.vx + a.vy * a.vy + a.vz * a.vz;
