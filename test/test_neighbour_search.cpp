@@ -32,6 +32,22 @@ TEST(NeighbourSearch, SamePairsAsBruteForce) {
   }
 }
 
+TEST(NeighbourSearch, SplittingThePointsOverThreadsGivesTheSameList) {
+  // Ranges of i searched in parallel and joined in order: the same sorted list as brute force,
+  // for more ranges than threads, for ranges with no point, and reused between calls.
+  std::mt19937_64 rng(11);
+  FixedRadiusNeighbourSearch search;
+  for (int count : {2, 3, 7, 2500}) {
+    const std::vector<Vec2> points = randomPoints(rng, count, 12.0, 3.0);
+    const std::vector<CandidatePair> expected = findPairsBruteForce(points, 0.4);
+    for (int threads : {1, 2, 3, 5}) {
+      const std::vector<CandidatePair>& found = search.findPairs(points, 0.4, threads);
+      ASSERT_EQ(found.size(), expected.size()) << count << " points, " << threads << " threads";
+      for (size_t k = 0; k < found.size(); ++k) ASSERT_EQ(found[k], expected[k]);
+    }
+  }
+}
+
 TEST(NeighbourSearch, PairAtExactlyTheRadiusIsFound) {
   FixedRadiusNeighbourSearch search;
   const std::vector<Vec2> points = {{0.0, 0.0}, {0.5, 0.0}, {1.25, 0.0}};

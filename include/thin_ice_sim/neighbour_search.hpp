@@ -21,14 +21,22 @@ class FixedRadiusNeighbourSearch {
  public:
   /// All pairs (i < j) with |p_i - p_j| <= radius, sorted by (i, j). Points with non-finite
   /// coordinates take part in no pair. radius must be finite and > 0 (std::invalid_argument).
-  const std::vector<CandidatePair>& findPairs(const std::vector<Vec2>& points, double radius);
+  /// With threads > 1 the points are split into that many contiguous ranges of i, searched in
+  /// parallel and joined in order: the list is the same for any number of threads.
+  const std::vector<CandidatePair>& findPairs(const std::vector<Vec2>& points, double radius, int threads = 1);
 
  private:
+  /// Appends the pairs (i, j > i) of point i to `out`, sorted by j.
+  void appendPairsOf(int i, const std::vector<Vec2>& points, double radius_squared,
+                     std::vector<CandidatePair>& out) const;
+
+  int bins_x_ = 0, bins_y_ = 0;
   std::vector<int> bin_of_point_;
   std::vector<int> bin_start_;      ///< (bins + 1) prefix sums of the counting sort
   std::vector<int> bin_cursor_;     ///< (bins) next free slot per bin during the sort
   std::vector<int> points_by_bin_;  ///< point indices grouped by bin
   std::vector<CandidatePair> pairs_;
+  std::vector<std::vector<CandidatePair>> range_pairs_;  ///< (threads) pairs of each range of i
 };
 
 /// Brute force O(N^2) reference for tests: same contract as findPairs().

@@ -7,6 +7,7 @@
 //   structure loads summed in cell order                      (serial, touching cells only)
 //   rebuild the candidate pairs when a cell moved > 0.1 l-bar, turned > delta_rot, a bond broke,
 //   or N_iter steps passed                                    (Algorithm 1, lines 14-17)
+//                                                             (parallel over ranges of cells and of candidates)
 // Pair forces are stored per pair and gathered per cell through fixed index lists, so the result
 // is bit-identical for any number of threads.
 #include "cpu_backend.hpp"
@@ -151,19 +152,67 @@ class CpuBackend final : public Backend {
     const int n = model_.cell_count;
     std::vector<Vec2> centres(n);
     for (int k = 0; k < n; ++k) centres[k] = {motion_[k].x, motion_[k].y};
-    const std::vector<CandidatePair>& candidates = search_.findPairs(centres, model_.constants.search_radius);
+    const int ranges = parallel_ ? threads_ : 1;
+    const std::vector<CandidatePair>& candidates =
+        search_.findPairs(centres, model_.constants.search_radius, ranges);
     // The pairs come sorted by (i, j); the pairs that stay keep their reference overlap S_ref,
-    // a new pair gets -1: its overlap at its first step becomes S_ref (contact.hpp).
+    // a new pair gets -1: its overlap at its first step becomes S_ref (contact.hpp). The
+    // candidates are filtered in contiguous ranges, in parallel, and joined in order.
     previous_i_.swap(contact_i_);
     previous_j_.swap(contact_j_);
     previous_reference_.swap(contact_reference_);
+    kept_ranges_.resize(ranges);
+    const long candidate_count = static_cast<long>(candidates.size());
+#pragma omp parallel for num_threads(ranges) schedule(static, 1) if (ranges > 1)
+    for (int t = 0; t < ranges; ++t) {
+      keepContactPairs(candidates, centres, candidate_count * t / ranges, candidate_count * (t + 1) / ranges,
+                       kept_ranges_[t]);
+    }
     contact_i_.clear();
     contact_j_.clear();
     contact_reference_.clear();
-    size_t cursor = 0;
+    for (const KeptPairs& range : kept_ranges_) {
+      contact_i_.insert(contact_i_.end(), range.i.begin(), range.i.end());
+      contact_j_.insert(contact_j_.end(), range.j.begin(), range.j.end());
+      contact_reference_.insert(contact_reference_.end(), range.reference.begin(), range.reference.end());
+    }
+    contact_touching_.resize(contact_i_.size());
+    contact_load_.resize(contact_i_.size());
+    contact_incidence_.build(n, contact_i_, contact_j_);
+    reference_ = motion_;
+    steps_since_rebuild_ = 0;
+    rebuild_requested_ = false;
+  }
+
+  /// The contact pairs of one range of candidates (they are sorted by (i, j)).
+  struct KeptPairs {
+    std::vector<int> i, j;
+    std::vector<double> reference;  ///< S_ref carried from the previous list, -1: new
+  };
+
+  /// Candidates [first, end) whose bounding circles (radius r + margin) can meet before the next
+  /// rebuild and that no intact bond holds, with the S_ref they had in the previous list.
+  void keepContactPairs(const std::vector<CandidatePair>& candidates, const std::vector<Vec2>& centres, long first,
+                        long end, KeptPairs& out) const {
+    out.i.clear();
+    out.j.clear();
+    out.reference.clear();
+    if (first >= end) return;
     const double margin = model_.constants.search_margin;
-    for (const CandidatePair& p : candidates) {
-      // Bounding circles (radius r + margin) that miss cannot touch before the next rebuild.
+    // The previous list is sorted by (i, j) too: start at the first entry not before this range.
+    const CandidatePair& start = candidates[first];
+    size_t cursor = 0, count = previous_i_.size();
+    while (count > 0) {  // lower bound of (start.i, start.j)
+      const size_t half = count / 2, mid = cursor + half;
+      if (previous_i_[mid] < start.i || (previous_i_[mid] == start.i && previous_j_[mid] < start.j)) {
+        cursor = mid + 1;
+        count -= half + 1;
+      } else {
+        count = half;
+      }
+    }
+    for (long c = first; c < end; ++c) {
+      const CandidatePair& p = candidates[c];
       const double reach = model_.radius[p.i] + model_.radius[p.j] + margin;
       const double dx = centres[p.j].x - centres[p.i].x, dy = centres[p.j].y - centres[p.i].y;
       if (dx * dx + dy * dy > reach * reach) continue;
@@ -173,16 +222,10 @@ class CpuBackend final : public Backend {
         ++cursor;
       }
       const bool kept = cursor < previous_i_.size() && previous_i_[cursor] == p.i && previous_j_[cursor] == p.j;
-      contact_i_.push_back(p.i);
-      contact_j_.push_back(p.j);
-      contact_reference_.push_back(kept ? previous_reference_[cursor] : -1.0);
+      out.i.push_back(p.i);
+      out.j.push_back(p.j);
+      out.reference.push_back(kept ? previous_reference_[cursor] : -1.0);
     }
-    contact_touching_.resize(contact_i_.size());
-    contact_load_.resize(contact_i_.size());
-    contact_incidence_.build(n, contact_i_, contact_j_);
-    reference_ = motion_;
-    steps_since_rebuild_ = 0;
-    rebuild_requested_ = false;
   }
 
   bool hasIntactBond(int i, int j) const {
@@ -335,6 +378,7 @@ class CpuBackend final : public Backend {
   std::vector<double> contact_reference_;   ///< S_ref of each pair [m^2] (contact.hpp), -1: new
   std::vector<int> previous_i_, previous_j_;
   std::vector<double> previous_reference_;
+  std::vector<KeptPairs> kept_ranges_;     ///< (threads) the pairs each range of candidates kept
   std::vector<unsigned char> contact_touching_;  ///< (pairs) S > 0 in this step
   std::vector<PairLoad> contact_load_;
   int broken_count_ = 0;

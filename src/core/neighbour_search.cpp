@@ -4,6 +4,7 @@
 //            instead of blowing up memory: still correct, only more candidates per bin)
 //   counting sort of the points by bin
 //   for each point i: test the points of the 3 x 3 bins around it, keep j > i within radius
+//                     (in parallel over contiguous ranges of i, joined in order)
 #include "thin_ice_sim/neighbour_search.hpp"
 
 #include <algorithm>
@@ -14,7 +15,7 @@
 namespace thin_ice {
 
 const std::vector<CandidatePair>& FixedRadiusNeighbourSearch::findPairs(const std::vector<Vec2>& points,
-                                                                        double radius) {
+                                                                        double radius, int threads) {
   if (!(std::isfinite(radius) && radius > 0.0)) {
     std::ostringstream msg;
     msg << "neighbour search: radius = " << radius << " is invalid; allowed: finite > 0 m";
@@ -61,31 +62,49 @@ const std::vector<CandidatePair>& FixedRadiusNeighbourSearch::findPairs(const st
     if (bin_of_point_[k] >= 0) points_by_bin_[bin_cursor_[bin_of_point_[k]]++] = k;
   }
 
+  bins_x_ = nx;
+  bins_y_ = ny;
   const double r2 = radius * radius;
-  for (int i = 0; i < n; ++i) {
-    const int b = bin_of_point_[i];
-    if (b < 0) continue;
-    const int bx = b % nx, by = b / nx;
-    const size_t begin = pairs_.size();
-    for (int dy = -1; dy <= 1; ++dy) {
-      const int cy = by + dy;
-      if (cy < 0 || cy >= ny) continue;
-      for (int dx = -1; dx <= 1; ++dx) {
-        const int cx = bx + dx;
-        if (cx < 0 || cx >= nx) continue;
-        const int c = cy * nx + cx;
-        for (int s = bin_start_[c]; s < bin_start_[c + 1]; ++s) {
-          const int j = points_by_bin_[s];
-          if (j <= i) continue;
-          const Vec2 d = points[j] - points[i];
-          if (d.x * d.x + d.y * d.y <= r2) pairs_.push_back({i, j});
-        }
+  if (threads <= 1) {
+    for (int i = 0; i < n; ++i) appendPairsOf(i, points, r2, pairs_);
+    return pairs_;
+  }
+  range_pairs_.resize(threads);
+#pragma omp parallel for num_threads(threads) schedule(static, 1)
+  for (int t = 0; t < threads; ++t) {
+    std::vector<CandidatePair>& out = range_pairs_[t];
+    out.clear();
+    const int first = static_cast<int>(static_cast<long>(n) * t / threads);
+    const int end = static_cast<int>(static_cast<long>(n) * (t + 1) / threads);
+    for (int i = first; i < end; ++i) appendPairsOf(i, points, r2, out);
+  }
+  for (const std::vector<CandidatePair>& range : range_pairs_) pairs_.insert(pairs_.end(), range.begin(), range.end());
+  return pairs_;
+}
+
+void FixedRadiusNeighbourSearch::appendPairsOf(int i, const std::vector<Vec2>& points, double radius_squared,
+                                               std::vector<CandidatePair>& out) const {
+  const int b = bin_of_point_[i];
+  if (b < 0) return;
+  const int bx = b % bins_x_, by = b / bins_x_;
+  const size_t begin = out.size();
+  for (int dy = -1; dy <= 1; ++dy) {
+    const int cy = by + dy;
+    if (cy < 0 || cy >= bins_y_) continue;
+    for (int dx = -1; dx <= 1; ++dx) {
+      const int cx = bx + dx;
+      if (cx < 0 || cx >= bins_x_) continue;
+      const int c = cy * bins_x_ + cx;
+      for (int s = bin_start_[c]; s < bin_start_[c + 1]; ++s) {
+        const int j = points_by_bin_[s];
+        if (j <= i) continue;
+        const Vec2 d = points[j] - points[i];
+        if (d.x * d.x + d.y * d.y <= radius_squared) out.push_back({i, j});
       }
     }
-    std::sort(pairs_.begin() + static_cast<long>(begin), pairs_.end(),
-              [](const CandidatePair& a, const CandidatePair& b) { return a.j < b.j; });
   }
-  return pairs_;
+  std::sort(out.begin() + static_cast<long>(begin), out.end(),
+            [](const CandidatePair& p, const CandidatePair& q) { return p.j < q.j; });
 }
 
 std::vector<CandidatePair> findPairsBruteForce(const std::vector<Vec2>& points, double radius) {
