@@ -86,6 +86,14 @@ def main():
             if cells[0][5] != f"{first_peak:.0f}" or abs(float(cells[0][0]) - step) > 1e-3:
                 failures.append(f"steady_by_length at {step:.3f} m: {cells[0]}, peak up to the cut {first_peak:.0f}")
 
+        # A --tool that is not there: one message naming the key and the value, no traceback.
+        missing_tool = os.path.join(tmp, "no_such_thin_ice_analyse")
+        refused = subprocess.run([sys.executable, os.path.join(source, "scripts/steady_by_length"), run,
+                                  "--tool", missing_tool],
+                                 stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
+        if refused.returncode == 0 or "Traceback" in refused.stderr or missing_tool not in refused.stderr:
+            failures.append(f"steady_by_length with a missing --tool: exit {refused.returncode}, {refused.stderr.strip()!r}")
+
         # Refused, and left alone: a run still writing, and a directory without a summary.
         partial = os.path.join(tmp, "partial")
         shutil.copytree(run, partial)
