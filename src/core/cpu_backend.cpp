@@ -199,18 +199,10 @@ class CpuBackend final : public Backend {
     out.reference.clear();
     if (first >= end) return;
     const double margin = model_.constants.search_margin;
-    // The previous list is sorted by (i, j) too: start at the first entry not before this range.
-    const CandidatePair& start = candidates[first];
-    size_t cursor = 0, count = previous_i_.size();
-    while (count > 0) {  // lower bound of (start.i, start.j)
-      const size_t half = count / 2, mid = cursor + half;
-      if (previous_i_[mid] < start.i || (previous_i_[mid] == start.i && previous_j_[mid] < start.j)) {
-        cursor = mid + 1;
-        count -= half + 1;
-      } else {
-        count = half;
-      }
-    }
+    // The previous list is sorted by (i, j) too: start at its first pair of this range's first i
+    // (the walk below passes the ones with a smaller j).
+    size_t cursor = static_cast<size_t>(
+        std::lower_bound(previous_i_.begin(), previous_i_.end(), candidates[first].i) - previous_i_.begin());
     for (long c = first; c < end; ++c) {
       const CandidatePair& p = candidates[c];
       const double reach = model_.radius[p.i] + model_.radius[p.j] + margin;
