@@ -179,6 +179,13 @@ class NodeInterfaceTest(unittest.TestCase):
         self.assertAlmostEqual(answer.sim_time - before.sim_time, 0.05, delta=TIME_STEP)
         answer = self.step(steps=100, duration=0.0)
         self.assertAlmostEqual(answer.sim_time - before.sim_time, 0.05 + 100 * TIME_STEP, delta=1e-9)
+        # Requests beyond ~max_steps_per_call are refused, not run for days or cast into a
+        # negative count: a huge duration, and 2^32 - 1 steps (what -1 becomes in the uint32).
+        for steps, duration in ((0, 1e300), (2**32 - 1, 0.0)):
+            refused = self.step(steps=steps, duration=duration)
+            self.assertFalse(refused.success)
+            self.assertIn("max_steps_per_call", refused.message)
+            self.assertEqual(refused.sim_time, answer.sim_time)
         self.reset()
         status = self.latest_status()
         self.assertEqual(status.sim_time, 0.0)

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -25,17 +26,86 @@ const std::string kScenarioDir = THIN_ICE_SCENARIO_DIR;
 std::string resolveScenario(const std::string& name) {
   const bool has_yaml_suffix = name.size() > 5 && name.substr(name.size() - 5) == ".yaml";
   if (name.find('/') != std::string::npos || has_yaml_suffix) {
-    return name;
+    // A relative path is taken from the node's working directory, which under roslaunch is
+    // ~/.ros: made absolute here, so that a "no such file" message says where it looked.
+    return std::filesystem::absolute(name).lexically_normal().string();
   }
   return kScenarioDir + "/" + name + ".yaml";
 }
 
-void requirePositive(const std::string& name, double value, bool allow_zero) {
-  if (!std::isfinite(value) || value < 0.0 || (!allow_zero && value == 0.0)) {
+void requireRange(const std::string& name, double value, double low, double high, bool allow_zero,
+                  const std::string& why) {
+  const bool zero_ok = allow_zero && value == 0.0;
+  if (!std::isfinite(value) || !(zero_ok || (value >= low && value <= high))) {
     std::ostringstream msg;
-    msg << "parameter ~" << name << " = " << value << " is invalid; allowed: " << (allow_zero ? ">= 0" : "> 0");
+    msg << "parameter ~" << name << " = " << value << " is invalid; allowed: " << (allow_zero ? "0 or " : "") << low
+        << " to " << high << why;
     throw std::invalid_argument(msg.str());
   }
+}
+
+std::string describe(XmlRpc::XmlRpcValue& value) {
+  std::ostringstream text;
+  value.write(text);
+  return text.str();
+}
+
+std::string typeName(const XmlRpc::XmlRpcValue& value) {
+  switch (value.getType()) {
+    case XmlRpc::XmlRpcValue::TypeBoolean: return "a boolean";
+    case XmlRpc::XmlRpcValue::TypeInt: return "an integer";
+    case XmlRpc::XmlRpcValue::TypeDouble: return "a number";
+    case XmlRpc::XmlRpcValue::TypeString: return "a string";
+    case XmlRpc::XmlRpcValue::TypeArray: return "a list";
+    case XmlRpc::XmlRpcValue::TypeStruct: return "a dictionary";
+    default: return "of another type";
+  }
+}
+
+[[noreturn]] void wrongType(const std::string& name, XmlRpc::XmlRpcValue& value, const std::string& allowed) {
+  throw std::invalid_argument("parameter ~" + name + " = " + describe(value) + " is " + typeName(value) +
+                              "; allowed: " + allowed);
+}
+
+// NodeHandle::param falls back to the default when the stored value has another type (paused:=1
+// is an integer, not a boolean), so a mistyped parameter would be ignored without a word. These
+// read the value as stored and accept only what can stand for the type without guessing.
+void readParam(const ros::NodeHandle& pnh, const std::string& name, double& out) {
+  XmlRpc::XmlRpcValue value;
+  if (!pnh.getParam(name, value)) return;
+  if (value.getType() == XmlRpc::XmlRpcValue::TypeDouble) {
+    out = static_cast<double>(value);
+  } else if (value.getType() == XmlRpc::XmlRpcValue::TypeInt) {
+    out = static_cast<int>(value);
+  } else {
+    wrongType(name, value, "a number");
+  }
+}
+
+void readParam(const ros::NodeHandle& pnh, const std::string& name, bool& out) {
+  XmlRpc::XmlRpcValue value;
+  if (!pnh.getParam(name, value)) return;
+  if (value.getType() == XmlRpc::XmlRpcValue::TypeBoolean) {
+    out = static_cast<bool>(value);
+  } else if (value.getType() == XmlRpc::XmlRpcValue::TypeInt && (static_cast<int>(value) == 0 || static_cast<int>(value) == 1)) {
+    out = static_cast<int>(value) == 1;
+  } else {
+    wrongType(name, value, "true or false (or 1 or 0)");
+  }
+}
+
+void readParam(const ros::NodeHandle& pnh, const std::string& name, std::string& out) {
+  XmlRpc::XmlRpcValue value;
+  if (!pnh.getParam(name, value)) return;
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeString) wrongType(name, value, "a string");
+  out = static_cast<std::string>(value);
+}
+
+void readParam(const ros::NodeHandle& pnh, const std::string& name, long& out) {
+  XmlRpc::XmlRpcValue value;
+  if (!pnh.getParam(name, value)) return;
+  if (value.getType() != XmlRpc::XmlRpcValue::TypeInt) wrongType(name, value, "a whole number");
+  out = static_cast<int>(value);
 }
 
 geometry_msgs::Vector3 vector3(double x, double y, double z) {
@@ -50,7 +120,8 @@ geometry_msgs::Vector3 vector3(double x, double y, double z) {
 
 NodeSettings readNodeSettings(const ros::NodeHandle& pnh) {
   NodeSettings s;
-  if (!pnh.getParam("scenario", s.scenario) || s.scenario.empty()) {
+  readParam(pnh, "scenario", s.scenario);
+  if (s.scenario.empty()) {
     throw std::invalid_argument("parameter ~scenario is required: a name in " + kScenarioDir + " or a path");
   }
   s.scenario = resolveScenario(s.scenario);
@@ -58,34 +129,45 @@ NodeSettings readNodeSettings(const ros::NodeHandle& pnh) {
   XmlRpc::XmlRpcValue set;
   if (pnh.getParam("set", set)) {
     if (set.getType() == XmlRpc::XmlRpcValue::TypeArray) {
-      for (int k = 0; k < set.size(); ++k) s.overrides.push_back(static_cast<std::string>(set[k]));
+      for (int k = 0; k < set.size(); ++k) {
+        if (set[k].getType() != XmlRpc::XmlRpcValue::TypeString) {
+          wrongType("set item " + std::to_string(k), set[k], "a 'section.key=value' string");
+        }
+        s.overrides.push_back(static_cast<std::string>(set[k]));
+      }
     } else if (set.getType() == XmlRpc::XmlRpcValue::TypeString) {
       std::istringstream words(static_cast<std::string>(set));
       for (std::string w; words >> w;) s.overrides.push_back(w);
     } else {
-      throw std::invalid_argument("parameter ~set must be a list of 'section.key=value' strings or one such string");
+      wrongType("set", set, "a list of 'section.key=value' strings or one such string");
     }
   }
-  pnh.param("backend", s.backend, s.backend);
-  pnh.param("real_time_factor", s.real_time_factor, s.real_time_factor);
-  pnh.param("load_rate", s.load_rate, s.load_rate);
-  pnh.param("marker_rate", s.marker_rate, s.marker_rate);
-  pnh.param("status_rate", s.status_rate, s.status_rate);
-  pnh.param("publish_clock", s.publish_clock, s.publish_clock);
-  pnh.param("cmd_timeout", s.cmd_timeout, s.cmd_timeout);
-  pnh.param("max_pusher_speed", s.max_pusher_speed, s.max_pusher_speed);
-  pnh.param("paused", s.start_paused, s.start_paused);
-  pnh.param("stop_time", s.stop_time, s.stop_time);
-  pnh.param("world_frame", s.world_frame, s.world_frame);
-  pnh.param("structure_frame", s.structure_frame, s.structure_frame);
-  pnh.param("pusher_frame", s.pusher_frame, s.pusher_frame);
-  requirePositive("real_time_factor", s.real_time_factor, true);
-  requirePositive("load_rate", s.load_rate, false);
-  requirePositive("marker_rate", s.marker_rate, false);
-  requirePositive("status_rate", s.status_rate, false);
-  requirePositive("cmd_timeout", s.cmd_timeout, true);
-  requirePositive("max_pusher_speed", s.max_pusher_speed, false);
-  requirePositive("stop_time", s.stop_time, true);
+  readParam(pnh, "backend", s.backend);
+  readParam(pnh, "real_time_factor", s.real_time_factor);
+  readParam(pnh, "load_rate", s.load_rate);
+  readParam(pnh, "marker_rate", s.marker_rate);
+  readParam(pnh, "status_rate", s.status_rate);
+  readParam(pnh, "publish_clock", s.publish_clock);
+  readParam(pnh, "cmd_timeout", s.cmd_timeout);
+  readParam(pnh, "max_pusher_speed", s.max_pusher_speed);
+  readParam(pnh, "max_steps_per_call", s.max_steps_per_call);
+  readParam(pnh, "paused", s.start_paused);
+  readParam(pnh, "stop_time", s.stop_time);
+  readParam(pnh, "world_frame", s.world_frame);
+  readParam(pnh, "structure_frame", s.structure_frame);
+  readParam(pnh, "pusher_frame", s.pusher_frame);
+  const NodeLimits& l = kNodeLimits;
+  requireRange("real_time_factor", s.real_time_factor, l.min_real_time_factor, l.max_real_time_factor, true,
+               " (0: as fast as possible)");
+  requireRange("load_rate", s.load_rate, l.min_load_rate, l.max_load_rate, false,
+               " Hz of simulated time (each load period is simulated in one call that nothing interrupts)");
+  requireRange("marker_rate", s.marker_rate, l.min_wall_rate, l.max_wall_rate, false, " Hz");
+  requireRange("status_rate", s.status_rate, l.min_wall_rate, l.max_wall_rate, false, " Hz");
+  requireRange("cmd_timeout", s.cmd_timeout, l.min_cmd_timeout, l.max_cmd_timeout, true, " s (0: never)");
+  requireRange("max_pusher_speed", s.max_pusher_speed, l.min_pusher_speed, l.max_pusher_speed, false, " m/s");
+  requireRange("max_steps_per_call", static_cast<double>(s.max_steps_per_call), 1.0, l.max_steps_per_call, false,
+               " time steps");
+  requireRange("stop_time", s.stop_time, l.min_stop_time, l.max_stop_time, true, " s (0: never)");
   parseBackendKind(s.backend, "parameter ~backend");
   return s;
 }
@@ -93,6 +175,13 @@ NodeSettings readNodeSettings(const ros::NodeHandle& pnh) {
 SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
     : nh_(nh), private_nh_(private_nh), settings_(readNodeSettings(private_nh_)) {
   const Scenario scenario = loadScenario(settings_.scenario, settings_.overrides);
+  if (std::fabs(scenario.params.pusher.velocity) > settings_.max_pusher_speed) {
+    std::ostringstream msg;
+    msg << settings_.scenario << ": pusher.velocity = " << scenario.params.pusher.velocity
+        << " m/s is faster than ~max_pusher_speed = " << settings_.max_pusher_speed
+        << " m/s; allowed: |pusher.velocity| <= ~max_pusher_speed (raise the parameter or lower the velocity)";
+    throw std::invalid_argument(msg.str());
+  }
   sim_ = std::make_unique<Simulation>(scenario, parseBackendKind(settings_.backend, "~backend"));
   ROS_INFO("thin_ice_sim: scenario %s (%d cells, dt %.3g s, critical %.3g s, structure contact in %d sub-steps), %s, "
            "CPU code built for %s",
@@ -180,9 +269,21 @@ bool SimNode::onStep(thin_ice_sim::Step::Request& request, thin_ice_sim::Step::R
   } else if (!sim_->healthy()) {
     response.message = "the simulation blew up: " + sim_->lastError() + "; call sim/reset";
   } else {
-    const long steps = request.duration > 0.0
-                           ? static_cast<long>(std::ceil(request.duration / sim_->timeStep() - 1e-9))
-                           : static_cast<long>(request.steps);
+    // Counted in double first: a huge duration, or a steps field of 2^32 - 1 sent for -1, is refused
+    // rather than cast into a long that overflows or a call that blocks the node for days.
+    const double wanted = request.duration > 0.0 ? std::ceil(request.duration / sim_->timeStep() - 1e-9)
+                                                 : static_cast<double>(request.steps);
+    if (wanted > static_cast<double>(settings_.max_steps_per_call)) {
+      std::ostringstream msg;
+      msg << "the request is " << wanted << " time steps (dt = " << sim_->timeStep()
+          << " s); allowed: at most ~max_steps_per_call = " << settings_.max_steps_per_call
+          << " per call (the node serves nothing else while it steps): step in several calls";
+      response.message = msg.str();
+      response.sim_time = sim_->time();
+      publishStatus();
+      return true;
+    }
+    const long steps = static_cast<long>(wanted);
     if (steps > 0) {
       sim_->setPusherVelocity(applied_velocity_ = commandedVelocity());
       sim_->step(steps);

@@ -29,13 +29,29 @@ struct NodeSettings {
   double status_rate = 10.0;            ///< ~status_rate [Hz of wall time]
   bool publish_clock = true;            ///< ~publish_clock
   double cmd_timeout = 1.0;             ///< ~cmd_timeout [s wall]; 0 = commands never expire
-  double max_pusher_speed = 0.5;        ///< ~max_pusher_speed [m/s]
+  double max_pusher_speed = 0.5;        ///< ~max_pusher_speed [m/s]; the scenario's pusher.velocity too
+  long max_steps_per_call = 100000;     ///< ~max_steps_per_call: sim/step refuses a longer request
   bool start_paused = false;            ///< ~paused
   double stop_time = 0.0;               ///< ~stop_time [s simulated]: shut down on reaching it; 0 = never
   std::string world_frame = "world";    ///< ~world_frame
   std::string structure_frame = "structure";  ///< ~structure_frame
   std::string pusher_frame = "pusher";  ///< ~pusher_frame
 };
+
+/// What readNodeSettings allows. The bounds keep every period and count the node derives from a
+/// parameter finite and representable (a WallDuration of 1/rate, a step count of span/dt) and keep
+/// one call from blocking the single-threaded node for hours; they are far outside any rig's use.
+struct NodeLimits {
+  double min_real_time_factor = 1e-3, max_real_time_factor = 1e6;  ///< [-] (0 also allowed)
+  double min_load_rate = 1.0, max_load_rate = 1e5;        ///< [Hz of simulated time]
+  double min_wall_rate = 0.01, max_wall_rate = 1e3;       ///< [Hz of wall time] markers, status
+  double min_cmd_timeout = 1e-3, max_cmd_timeout = 1e6;   ///< [s wall] (0 also allowed)
+  double min_pusher_speed = 1e-6, max_pusher_speed = 10.0;  ///< [m/s] ~max_pusher_speed; the health
+                                                            ///< check stops any cell at 50 m/s
+  double max_steps_per_call = 1e8;                        ///< [-] upper bound of ~max_steps_per_call
+  double min_stop_time = 0.0, max_stop_time = 1e9;        ///< [s simulated]
+};
+inline constexpr NodeLimits kNodeLimits{};
 
 /// Reads and checks the settings; throws std::invalid_argument naming the parameter.
 NodeSettings readNodeSettings(const ros::NodeHandle& private_nh);

@@ -4,6 +4,8 @@
 #include <cstdio>
 #include <exception>
 
+#include <xmlrpcpp/XmlRpcException.h>
+
 #include "sim_node.hpp"
 #include "thin_ice_sim/built_backends.hpp"
 
@@ -17,6 +19,11 @@ int main(int argc, char** argv) {
     ROS_FATAL("thin_ice_sim: %s", e.what());
     // rosconsole may not flush before a quick exit: say it on stderr too.
     std::fprintf(stderr, "[FATAL] thin_ice_sim: %s\n", e.what());
+    return 1;
+  } catch (const XmlRpc::XmlRpcException& e) {  // not a std::exception
+    ROS_FATAL("thin_ice_sim: parameter server value of an unexpected type: %s", e.getMessage().c_str());
+    std::fprintf(stderr, "[FATAL] thin_ice_sim: parameter server value of an unexpected type: %s\n",
+                 e.getMessage().c_str());
     return 1;
   }
   return 0;
