@@ -88,19 +88,27 @@ def main():
                  (["--resume", split, "--until-time", "1", "--set", "ice.density=900"], "give none of them"),
                  (["--resume", corrupt, "--until-time", "1"], "truncated"),
                  (["--resume", no_checkpoint, "--until-time", "1"], "has no checkpoint.bin"),
-                 (scenario + ["--until-time", "1", "--out", tmp, "--accept-changed-scenario"], "with --resume DIR only")]
+                 (scenario + ["--until-time", "1", "--out", tmp, "--accept-changed-scenario"], "with --resume DIR only"),
+                 # a fresh run into a directory holding another would mix the two runs' files
+                 (scenario + ["--until-time", "1", "--out", split], "already holds a run (summary.json)"),
+                 # step counts beyond a long: refused, not overflowed into an empty "completed" run
+                 (scenario + ["--until-time", "1e300", "--out", os.path.join(tmp, "huge")], "time steps of"),
+                 (strip_scenario(source) + ["--output-interval", "1e300", "--until-time", "1",
+                                            "--out", os.path.join(tmp, "huge")], "time steps of")]
         for args, expected in cases:
             done = run(tool, args)
             if done.returncode != 2 or expected not in done.stderr:
                 failures.append(f"{' '.join(args[-4:])}: exit status {done.returncode}, stderr {done.stderr.strip()!r}; "
                                 f"expected 2 and {expected!r}")
+        if os.path.exists(os.path.join(tmp, "huge")):
+            failures.append("a refused run created its --out directory")
         for d, files in before.items():
             if contents(d) != files:
                 failures.append(f"a refused resumption changed {os.path.basename(d)}/ ({sorted(contents(d))})")
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("OK: resumed runs identical to the run in one go (from the second row boundary after a short row); "
-          "six bad resumptions refused with exit status 2")
+          "nine bad requests refused with exit status 2")
 
 
 if __name__ == "__main__":

@@ -552,6 +552,22 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
   return sim;
 }
 
+/// Most time steps a run may be asked for (far beyond any run; a long holds 9.2e18).
+constexpr double kMaxStepCount = 1e15;
+
+/// A fresh run writes loads.csv, summary.json, checkpoint.bin and maybe snapshots/ and
+/// profiles.csv: into a directory that holds another run's files, the two runs' outputs would mix
+/// (old snapshots beside new loads). Refused, naming what is there.
+void refuseDirectoryWithRun(const std::string& dir) {
+  for (const char* name : {"summary.json", "loads.csv", "loads.csv.partial", "checkpoint.bin", "snapshots",
+                           "profiles.csv", "unhealthy_segment.csv"}) {
+    if (std::filesystem::exists(std::filesystem::path(dir) / name)) {
+      throw UsageError("--out " + dir + " already holds a run (" + name +
+                       "); allowed: a new or empty directory (remove it, or carry the run on with --resume " + dir + ")");
+    }
+  }
+}
+
 /// Loads the scenario and builds the simulation (or takes over a run to resume); creates nothing
 /// on disk.
 std::unique_ptr<Simulation> prepare(Options& o, Continuation& cont) {
@@ -559,11 +575,26 @@ std::unique_ptr<Simulation> prepare(Options& o, Continuation& cont) {
   if (!o.resume.empty()) {
     sim = prepareResume(o, cont);
   } else {
+    refuseDirectoryWithRun(o.out);
     sim = std::make_unique<Simulation>(thin_ice::loadScenario(o.scenario, o.overrides), o.backend);
   }
   if (o.until_length > 0.0 && !(sim->pusherVelocity() > 0.0)) {
     throw UsageError("--until-length needs pusher.velocity > 0 m/s; the scenario has " +
                      jsonNumber(sim->pusherVelocity()) + " m/s (use --until-time)");
+  }
+  // Step counts are longs made from these quotients: a value whose count a long cannot hold would
+  // overflow into a run that ends at once and says "completed".
+  const double dt = sim->timeStep();
+  const double target_steps = o.until_length > 0.0 ? o.until_length / (sim->pusherVelocity() * dt) : o.until_time / dt;
+  if (!(target_steps <= kMaxStepCount)) {
+    throw UsageError(std::string(o.until_length > 0.0 ? "--until-length " : "--until-time ") +
+                     jsonNumber(o.until_length > 0.0 ? o.until_length : o.until_time) + " is " +
+                     jsonNumber(target_steps) + " time steps of " + jsonNumber(dt) + " s; allowed: at most " +
+                     jsonNumber(kMaxStepCount) + " steps");
+  }
+  if (!(o.output_interval / dt <= kMaxStepCount)) {
+    throw UsageError("--output-interval " + jsonNumber(o.output_interval) + " is " + jsonNumber(o.output_interval / dt) +
+                     " time steps of " + jsonNumber(dt) + " s; allowed: at most " + jsonNumber(kMaxStepCount) + " steps");
   }
   return sim;
 }
