@@ -182,6 +182,7 @@ TEST(Scenario, M2ReproducesTable5AndTable4) {
   expectNear(1.7e11, p.structure.stiffness, "K_struct");
   expectNear(1.0, p.structure.calibration_factor, "alpha");  // not 0.63: docs/validation/calibration.md
   expectNear(0.05, p.pusher.velocity, "pusher");
+  expectNear(0.0, p.pusher.friction, "ice-pusher friction");  // a smooth plate, as before the key
   EXPECT_TRUE(p.bottom.enabled);
   expectNear(4.0, p.bottom.distance_from_structure, "false bottom");
   expectNear(0.55, p.bottom.friction, "ice-bottom friction");
@@ -388,6 +389,8 @@ TEST_F(ScenarioFileTest, RangeChecksOnOtherSections) {
               {"structure.toe_x = 2 is invalid", "allowed: >= 3 m"});
   expectError("substeps.yaml", withValue(quick_, "numerics", "structure_substeps", "0"),
               {"numerics.structure_substeps = 0 is invalid", "allowed: integer in [1, 1000]"});
+  expectError("pusher.yaml", withValue(quick_, "pusher", "friction", "-0.1"),
+              {"pusher.friction = -0.1 is invalid", "allowed: >= 0"});
 }
 
 TEST_F(ScenarioFileTest, DuplicateKey) {

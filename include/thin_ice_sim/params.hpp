@@ -85,14 +85,15 @@ inline double structureFaceX(const StructureParams& s, double z) {
 struct PusherParams {
   double velocity = 0.05;           ///< [m/s] towards +x (the structure); Table 4
   double stiffness = 1e9;           ///< penalty [Pa], force = K S_pen as for the structure
+  double friction = 0.0;            ///< [-] ice-plate Coulomb coefficient; 0: a smooth plate
 };
 
 /// Walls along the basin's long sides (y = +-channel_width/2), so the sheet stays in the lane.
 struct ChannelParams {
   bool enabled = true;
   double width = 10.0;              ///< [m] distance between the walls
-  double stiffness = 1e9;           ///< penalty [Pa]
-  double friction = 0.1;            ///< [-]
+  double stiffness = 1e9;           ///< penalty [Pa]; also the side panels' when enabled is false
+  double friction = 0.1;            ///< [-]; also the side panels' when enabled is false
 };
 
 /// Largest numerics.structure_substeps the loader accepts.

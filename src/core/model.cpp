@@ -55,7 +55,7 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
   const double structure_rate_limit = rate_limit * p.numerics.structure_substeps;  // [1/s]
   c.structure = {p.structure.stiffness, h, p.structure.friction, ice.contact_damping_ratio, regularisation,
                  structure_rate_limit};
-  c.pusher = {p.pusher.stiffness, h, 0.0, ice.contact_damping_ratio, regularisation, rate_limit};
+  c.pusher = {p.pusher.stiffness, h, p.pusher.friction, ice.contact_damping_ratio, regularisation, rate_limit};
   c.bottom = {p.bottom.stiffness, h, p.bottom.friction, ice.contact_damping_ratio, regularisation, rate_limit};
   c.wall = {p.channel.stiffness, h, p.channel.friction, ice.contact_damping_ratio, regularisation, rate_limit};
 

@@ -234,7 +234,8 @@ const std::vector<Section>& sections() {
         number(&P::structure, &StructureParams::friction, "friction")}},
       {"pusher",
        {number(&P::pusher, &PusherParams::velocity, "velocity"),
-        number(&P::pusher, &PusherParams::stiffness, "stiffness")}},
+        number(&P::pusher, &PusherParams::stiffness, "stiffness"),
+        number(&P::pusher, &PusherParams::friction, "friction")}},
       {"channel",
        {flag(&P::channel, &ChannelParams::enabled, "enabled"),
         number(&P::channel, &ChannelParams::width, "width"),
@@ -481,6 +482,7 @@ void checkParams(const Params& p) {
   nonNegative("structure.friction", s.friction, "a friction coefficient", "");
   finite("pusher.velocity", p.pusher.velocity);
   positive("pusher.stiffness", p.pusher.stiffness, "a contact stiffness", " Pa");
+  nonNegative("pusher.friction", p.pusher.friction, "a friction coefficient", "");
   positive("channel.width", p.channel.width, "the channel width", " m");
   positive("channel.stiffness", p.channel.stiffness, "a contact stiffness", " Pa");
   nonNegative("channel.friction", p.channel.friction, "a friction coefficient", "");
