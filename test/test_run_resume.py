@@ -82,12 +82,21 @@ def main():
         no_checkpoint = os.path.join(tmp, "no_checkpoint")
         shutil.copytree(split, no_checkpoint)
         os.remove(os.path.join(no_checkpoint, "checkpoint.bin"))
-        before = {d: contents(d) for d in (split, corrupt, no_checkpoint)}
+        # A run started from another directory names its scenario relative to that directory.
+        elsewhere = os.path.join(tmp, "elsewhere")
+        shutil.copytree(split, elsewhere)
+        with open(os.path.join(elsewhere, "summary.json")) as f:
+            summary = json.load(f)
+        summary["scenario"]["file"] = "config/scenarios/not_here.yaml"
+        with open(os.path.join(elsewhere, "summary.json"), "w") as f:
+            json.dump(summary, f, indent=2)
+        before = {d: contents(d) for d in (split, corrupt, no_checkpoint, elsewhere)}
         cases = [(["--resume", split, "--until-time", "0.8"], "already at t = 0.8"),
                  (["--resume", split, "--until-time", "1", "--out", tmp], "give none of them"),
                  (["--resume", split, "--until-time", "1", "--set", "ice.density=900"], "give none of them"),
                  (["--resume", corrupt, "--until-time", "1"], "truncated"),
                  (["--resume", no_checkpoint, "--until-time", "1"], "has no checkpoint.bin"),
+                 (["--resume", elsewhere, "--until-time", "1"], "relative to the directory the run was started from"),
                  (scenario + ["--until-time", "1", "--out", tmp, "--accept-changed-scenario"], "with --resume DIR only"),
                  # a fresh run into a directory holding another would mix the two runs' files
                  (scenario + ["--until-time", "1", "--out", split], "already holds a run (summary.json)"),
@@ -108,7 +117,7 @@ def main():
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("OK: resumed runs identical to the run in one go (from the second row boundary after a short row); "
-          "nine bad requests refused with exit status 2")
+          "ten bad requests refused with exit status 2")
 
 
 if __name__ == "__main__":

@@ -3,6 +3,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 #include <sstream>
@@ -70,6 +71,13 @@ Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, s
   const std::string file = summary["scenario"]["file"].as<std::string>();
   std::vector<std::string> overrides;
   for (const YAML::Node& o : summary["scenario"]["overrides"]) overrides.push_back(o.as<std::string>());
+  // The file is named as the run was started, often relative to the directory it was started from.
+  if (std::filesystem::path(file).is_relative() && !std::filesystem::exists(file)) {
+    throw std::runtime_error(run_dir + "/summary.json names the scenario " + file +
+                             ", relative to the directory the run was started from; there is no such file under the "
+                             "working directory " + std::filesystem::current_path().string() +
+                             ": resume from that directory (the repository root for the shipped runs)");
+  }
   Scenario scenario = loadScenario(file, overrides);
   const std::string run_hash = summary["scenario"]["hash"].as<std::string>();
   warning.clear();
