@@ -26,11 +26,18 @@ def analyse(tool, run_dir):
     (None, with "scenario_error", when the scenario cannot be loaded). Run from the repository
     root, where the runs' relative scenario paths start; raises RuntimeError with the tool's
     message when it refuses the directory."""
-    done = subprocess.run([tool, os.path.abspath(run_dir)], cwd=ROOT, stdout=subprocess.PIPE,
-                          stderr=subprocess.PIPE, text=True, timeout=600)
+    # The tool's path is the caller's (relative to where the script was started), not ROOT's.
+    try:
+        done = subprocess.run([os.path.abspath(tool), os.path.abspath(run_dir)], cwd=ROOT, stdout=subprocess.PIPE,
+                              stderr=subprocess.PIPE, text=True, timeout=600)
+    except OSError as e:
+        raise RuntimeError(f"cannot start {tool}: {e.strerror}") from e
     if done.returncode != 0:
         raise RuntimeError(done.stderr.strip() or f"thin_ice_analyse exit status {done.returncode}")
-    return json.loads(done.stdout)
+    try:
+        return json.loads(done.stdout)
+    except ValueError as e:
+        raise RuntimeError(f"{tool} did not answer in JSON ({e}): is it thin_ice_analyse?") from e
 
 
 def scenario_of_run(summary):

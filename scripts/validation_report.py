@@ -14,6 +14,10 @@ import json
 import math
 import os
 import re
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from png_output import save_png  # noqa: E402
 
 SERIES = ["W-1", "W-2", "W-3", "M-1", "M-2", "S-1", "S-2"]
 # Table 5: pushed length of each experiment [m].
@@ -23,11 +27,23 @@ PAPER_TIM = {"W": (11984, 8505), "M": (16780, 7840), "S": (20204, 16191)}
 TARGETS = "steady-state mean within +-10 %, peak within +-25 %, phase-1 slope within +-25 % of 1500 N/m"
 
 
+def fail(message):
+    """Bad input: one message, exit status 2, and the old report left as it was."""
+    print(f"validation_report: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
 def load_runs(root):
     runs = {}
     for path in sorted(glob.glob(os.path.join(root, "*", "summary.json"))):
-        with open(path) as f:
-            runs[os.path.basename(os.path.dirname(path))] = json.load(f)
+        try:
+            with open(path) as f:
+                summary = json.load(f)
+        except ValueError as e:
+            fail(f"{path} is not JSON ({e}); allowed: a thin_ice_run summary.json")
+        if not isinstance(summary, dict) or not isinstance(summary.get("load"), dict):
+            fail(f"{path} has no \"load\" object; allowed: a thin_ice_run summary.json")
+        runs[os.path.basename(os.path.dirname(path))] = summary
     return runs
 
 
@@ -41,10 +57,14 @@ def record(root, name, summary):
         return None
     lengths, loads, broken = [], [], 0
     with open(path, newline="") as f:
-        for r in csv.DictReader(f):
-            lengths.append(float(r["pushed_length_m"]))
-            loads.append(float(r["horizontal_calibrated_N"]))
-            broken = int(r["broken_bonds"])
+        for number, r in enumerate(csv.DictReader(f), 2):
+            try:
+                lengths.append(float(r["pushed_length_m"]))
+                loads.append(float(r["horizontal_calibrated_N"]))
+                broken = int(r["broken_bonds"])
+            except (KeyError, TypeError, ValueError):
+                fail(f"{path}, line {number}: not a row of thin_ice_run's loads.csv (a missing column or a row "
+                     "cut short)")
     if not loads:
         return None
     first_failure = (summary.get("load") or {}).get("first_failure_m")
@@ -91,7 +111,7 @@ def compare_plot(root, sid, names, histories):
     ax.legend(fontsize=8, ncol=2)
     fig.tight_layout()
     out = os.path.join(root, sid, "variants.png")
-    fig.savefig(out, dpi=110)
+    save_png(fig, out, dpi=110)
     plt.close(fig)
     return out
 
@@ -198,7 +218,7 @@ def long_runs_section(root, entries, rel):
         ax.grid(alpha=0.3)
         ax.legend(fontsize=8)
         fig.tight_layout()
-        fig.savefig(os.path.join(root, "long_runs.png"), dpi=110)
+        save_png(fig, os.path.join(root, "long_runs.png"), dpi=110)
         plt.close(fig)
         lines += [f"![Long runs]({rel}/long_runs.png)", ""]
     return lines
@@ -283,7 +303,7 @@ def profile_plot(root, name, summary):
                  f"(model only: the experiment's profiles, Fig. 13, are drawings without data)")
     fig.tight_layout()
     out = os.path.join(root, name, "profiles.png")
-    fig.savefig(out, dpi=110)
+    save_png(fig, out, dpi=110)
     plt.close(fig)
     return out
 
@@ -427,6 +447,10 @@ def seeds_and_resolution(root, runs, histories, rel, level="##"):
         names = [n for n in runs if re.fullmatch(re.escape(sid) + r"(-seed\d+)?", n)]
         if len(names) >= 2:
             seeds = [runs[n] for n in names]
+            # A record too short for statistics has none (null): it cannot count in the spread.
+            seeds = [s for s in seeds if s["load"].get("steady_mean_N") is not None and s["load"].get("peak_N") is not None]
+            if len(seeds) < 2:
+                continue
             means = [s["load"]["steady_mean_N"] for s in seeds]
             peaks = [s["load"]["peak_N"] for s in seeds]
             recs = [histories[n] for n in names if histories[n]]
@@ -511,7 +535,14 @@ def main():
     p.add_argument("--runs", required=True)
     p.add_argument("--out", required=True)
     a = p.parse_args()
+    if not os.path.isdir(a.runs):
+        fail(f"--runs {a.runs}: no such folder; allowed: the folder of run folders (docs/validation)")
+    if not a.out.endswith(".md") or not os.path.isdir(os.path.dirname(os.path.abspath(a.out))):
+        fail(f"--out {a.out}: allowed: a .md file in an existing folder")
     runs = load_runs(a.runs)
+    if not runs:
+        fail(f"--runs {a.runs} holds no run (no {a.runs}/RUN/summary.json): the report would say nothing was run; "
+             f"{a.out} is left as it was")
     rel = os.path.relpath(a.runs, os.path.dirname(os.path.abspath(a.out)))
     # The runs of the earlier reading, kept apart so that every run above them is of the scenarios as
     # they stand: docs/validation/level_only/RUN.

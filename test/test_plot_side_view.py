@@ -25,11 +25,20 @@ def main():
             failures.append(f"{out} is {os.path.getsize(out)} bytes")
         if "L = " not in done.stdout or "cells drawn" not in done.stdout:
             failures.append(f"unexpected report: {done.stdout.strip()!r}")
+        # A run folder without snapshots (docs/validation/ keeps none), and outputs that cannot be written.
+        bare = os.path.join(tmp, "bare")
+        os.makedirs(bare)
+        with open(os.path.join(run, "summary.json")) as f, open(os.path.join(bare, "summary.json"), "w") as g:
+            g.write(f.read())
         for args, needle in (([run, out, "--snapshot", "cells_999999.csv"], "cells_999999.csv"),
-                             ([run, out, "--reach", "-1"], "--reach -1")):
+                             ([run, out, "--reach", "-1"], "--reach -1"),
+                             ([bare, out], "no snapshots/index.csv"),
+                             ([os.path.join(tmp, "none"), out], "cannot read summary.json"),
+                             ([run, os.path.join(tmp, "no_folder", "side.png")], "no_folder"),
+                             ([run, os.path.join(tmp, "side.pgn")], "ending in .png")):
             problem = refusal_problem([script] + args, needle)
             if problem:
-                failures.append(f"{args[2:]}: {problem}")
+                failures.append(f"{args}: {problem}")
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("OK: plot_side_view draws the last snapshot and names bad input in one line")

@@ -107,6 +107,11 @@ def main():
             failures.append(f"bad directories: exit {done.returncode}, {done.stderr.strip()!r}")
         if open(os.path.join(partial, "summary.json")).read() != before:
             failures.append("a refused run was changed")
+        # steady_by_length would otherwise cut the record of an earlier stop without a word.
+        done = subprocess.run([sys.executable, os.path.join(source, "scripts/steady_by_length"), partial,
+                               "--tool", analyse_tool], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
+        if done.returncode != 2 or "loads.csv.partial" not in done.stderr or "Traceback" in done.stderr:
+            failures.append(f"steady_by_length on a run still writing: exit {done.returncode}, {done.stderr.strip()!r}")
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("OK: the statistics worked out again from loads.csv are those the run wrote")

@@ -63,7 +63,27 @@ def main():
     if missing:
         section = text[text.find("## Targets at a glance"):text.find("## Table 6")]
         sys.exit("FAIL: missing lines " + repr(missing) + " in:\n" + section)
-    print("OK: validation_report judges each ice type's longest run against the tolerances as worked out by hand")
+    # Bad input: one message, exit status 2, and the report already there left as it was.
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "validation.md")
+        with open(out, "w") as f:
+            f.write("the old report")
+        empty, broken = os.path.join(tmp, "empty"), os.path.join(tmp, "broken")
+        os.makedirs(empty)
+        os.makedirs(os.path.join(broken, "W-3"))
+        with open(os.path.join(broken, "W-3", "summary.json"), "w") as f:
+            f.write("{\"load\": ")
+        for runs, needle in ((os.path.join(tmp, "no_such"), "no such folder"), (empty, "holds no run"),
+                             (broken, "is not JSON")):
+            done = subprocess.run([sys.executable, script, "--runs", runs, "--out", out],
+                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=120)
+            if done.returncode != 2 or needle not in done.stderr or "Traceback" in done.stderr:
+                sys.exit(f"FAIL: --runs {runs}: exit status {done.returncode}, stderr {done.stderr.strip()!r}; "
+                         f"expected 2 and {needle!r}")
+            if open(out).read() != "the old report":
+                sys.exit(f"FAIL: --runs {runs} replaced the report already there")
+    print("OK: validation_report judges each ice type's longest run against the tolerances as worked out by hand, "
+          "and refuses a missing, empty or broken --runs folder without touching the report")
 
 
 if __name__ == "__main__":
