@@ -19,7 +19,7 @@ from quick_strip import refusal_problem
 # With the override ice.thickness=0.2 instead: z_rest = 0.1 - 0.18 = -0.08 m; below: z < -0.18 m,
 # above: z > +0.02 m.
 COLUMNS = ["run", "pushed_length_m", "cells_below", "sheet_cells_below", "cells_above", "sheet_cells_above",
-           "free_blocks", "sheet_cells", "farthest_broken_below_from_toe_m"]
+           "free_blocks", "sheet_cells", "farthest_broken_below_from_toe_m", "sheet_nearest_to_toe_m"]
 SCENARIO = "ice:\n  thickness: 0.1\n  density: 900\nwater:\n  density: 1000\n"
 TOE_X = 10.0
 # (x [m], z [m], bonded, cells in its bonded piece). The sheet is the largest piece: cells 0, 5, 6.
@@ -31,10 +31,11 @@ CELLS = [(5.0, -0.04, True, 3),    # the sheet at rest: neither
          (6.0, -0.085, True, 3),   # the sheet, neither for h = 0.1 (-0.085 > -0.09)
          (8.0, -0.095, True, 3)]   # the sheet, pressed down for h = 0.1 only, 2.0 m from the toe
 # h = 0.1: below 1, 2, 6 (one the sheet's); above 3, 4; free 1, 3; sheet 3 cells; farthest broken
-# below 2.5 m (cell 6 at 2.0 m is the sheet's). The "thick" run's snapshot is written without
-# piece_cells, as before 2026-12-02: below 2 only, above 4 only, the sheet unknown, farthest 2.5 m.
-EXPECTED_ROW = "| 0.500 | 3 | 1 | 2 | 0 | 2 | 3 | 2.50 |"
-EXPECTED_ROW_THICK = "| 0.500 | 1 | - | 1 | - | 2 | - | 2.50 |"
+# below 2.5 m (cell 6 at 2.0 m is the sheet's); the sheet's cell nearest the toe is cell 6, 2.0 m in
+# front of it. The "thick" run's snapshot is written without piece_cells, as before 2026-12-02:
+# below 2 only, above 4 only, the sheet unknown, farthest 2.5 m.
+EXPECTED_ROW = "| 0.500 | 3 | 1 | 2 | 0 | 2 | 3 | 2.50 | 2.00 |"
+EXPECTED_ROW_THICK = "| 0.500 | 1 | - | 1 | - | 2 | - | 2.50 | - |"
 
 
 def make_run(folder, overrides, with_pieces=True):
@@ -84,7 +85,7 @@ def main():
             failures.append(f"two runs: exit status {done.returncode}, stderr {done.stderr.strip()!r}")
         else:
             lines = open(both_csv).read().splitlines()
-            if lines[1:] != ["plain,0.5000,3,1,2,0,2,3,2.500", "thick,0.5000,1,,1,,2,,2.500"]:
+            if lines[1:] != ["plain,0.5000,3,1,2,0,2,3,2.500,2.000", "thick,0.5000,1,,1,,2,,2.500,"]:
                 failures.append(f"two runs: CSV {lines}")
             if not os.path.exists(png) or os.path.getsize(png) < 10000:
                 failures.append("two runs: --plot wrote no picture")
@@ -92,8 +93,9 @@ def main():
         # shorter L than its first snapshot, in order; a row at or past it and other runs' rows are
         # left out), and a CSV with other columns is refused.
         earlier_csv, merged_csv = os.path.join(tmp, "earlier.csv"), os.path.join(tmp, "merged.csv")
+        # (written before the last column was added: still read, that column left empty)
         with open(earlier_csv, "w") as f:
-            f.write(",".join(COLUMNS) + "\n" + "plain,0.3000,1,0,0,0,0,5,0.000\n"
+            f.write(",".join(COLUMNS[:-1]) + "\n" + "plain,0.3000,1,0,0,0,0,5,0.000\n"
                     + "plain,0.1000,0,0,0,0,0,6,0.000\n" + "plain,0.5000,9,9,9,9,9,9,9.000\n"
                     + "other,0.2000,7,7,7,7,7,7,7.000\n")
         done = run(script, [os.path.join(tmp, "plain"), "--earlier", earlier_csv, "--csv", merged_csv, "--plot", png])
@@ -101,8 +103,8 @@ def main():
             failures.append(f"--earlier: exit status {done.returncode}, stderr {done.stderr.strip()!r}")
         else:
             lines = open(merged_csv).read().splitlines()
-            if lines[1:] != ["plain,0.1000,0,0,0,0,0,6,0.000", "plain,0.3000,1,0,0,0,0,5,0.000",
-                             "plain,0.5000,3,1,2,0,2,3,2.500"]:
+            if lines[1:] != ["plain,0.1000,0,0,0,0,0,6,0.000,", "plain,0.3000,1,0,0,0,0,5,0.000,",
+                             "plain,0.5000,3,1,2,0,2,3,2.500,2.000"]:
                 failures.append(f"--earlier: CSV {lines}")
         with open(earlier_csv, "w") as f:
             f.write("run,pushed_length_m\nplain,0.1\n")
