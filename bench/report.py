@@ -19,11 +19,15 @@ import json
 import math
 import os
 import re
+import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
+from png_output import save_png  # noqa: E402
 
 
 def read_table(path):
@@ -92,7 +96,7 @@ def cpu_section(run, out, lines):
     ax2.legend(fontsize=7)
     fig.suptitle("thin_ice_sim CPU backend: scaling with the number of cells")
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "scaling.png"), dpi=110)
+    save_png(fig, os.path.join(out, "scaling.png"), dpi=110)
     plt.close(fig)
     lines += ["![Scaling](scaling.png)", ""]
 
@@ -270,7 +274,7 @@ def dem_section(run, out, lines):
         title += f" ({isa} build),\n{lig_per_sim / base_per_sim:.1f} (baseline build, as LIGGGHTS's)"
     ax.set_title(title, fontsize=10)
     fig.tight_layout()
-    fig.savefig(os.path.join(out, "dem_comparison.png"), dpi=110)
+    save_png(fig, os.path.join(out, "dem_comparison.png"), dpi=110)
     plt.close(fig)
     lines += ["![3-D DEM comparison](dem_comparison.png)", ""]
 
@@ -307,13 +311,23 @@ def rtf_section(run, lines):
                   "|---|---:|---:|---:|---:|---:|"] + validation + [""]
 
 
+def fail(message):
+    print(f"bench/report.py: {message}", file=sys.stderr)
+    sys.exit(2)
+
+
 def main():
     p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--run", required=True)
     p.add_argument("--out", required=True)
     a = p.parse_args()
-    with open(os.path.join(a.run, "machine.json")) as f:
-        machine = json.load(f)
+    if not os.path.isdir(a.out):
+        fail(f"--out {a.out}: no such folder; allowed: the folder RESULTS.md and its plots go to (bench)")
+    try:
+        with open(os.path.join(a.run, "machine.json")) as f:
+            machine = json.load(f)
+    except (OSError, ValueError) as e:
+        fail(f"--run {a.run}: no readable machine.json ({e}); allowed: the folder scripts/bench wrote its run into")
     lines = ["# Benchmark results", "",
              "Regenerated from scratch by `scripts/bench`; every figure below comes from one run on one machine.", "",
              f"- machine: {machine['cpu']}, {machine['cores']} cores, {machine['memory_gib']} GiB",
