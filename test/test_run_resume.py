@@ -9,6 +9,7 @@ a directory that cannot be resumed is refused with exit status 2 and left as it 
 """
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -114,6 +115,32 @@ def main():
         for d, files in before.items():
             if contents(d) != files:
                 failures.append(f"a refused resumption changed {os.path.basename(d)}/ ({sorted(contents(d))})")
+        # A resumed segment that blows up (the scenario file's dt raised past the critical step, taken
+        # with --accept-changed-scenario) leaves the run as it was, snapshots included; its rows go
+        # to unhealthy_segment.csv (exit status 3).
+        scenario_copy = os.path.join(tmp, "quick_copy.yaml")
+        shutil.copy(os.path.join(source, "config/scenarios/quick.yaml"), scenario_copy)
+        blown = os.path.join(tmp, "blown")
+        # (rows of 1 ms and a snapshot due at every row of the resumed segment: it blows up at
+        # t = 0.206 s, after five of them were written)
+        done = run(tool, ["--scenario", scenario_copy] + strip_scenario(source)[2:] +
+                   ["--until-time", "0.2", "--output-interval", "0.001", "--snapshots", "2", "--out", blown])
+        if done.returncode != 0:
+            failures.append(f"the run to blow up later: exit status {done.returncode}: {done.stderr.strip()}")
+        else:
+            with open(scenario_copy) as f:
+                text = f.read()
+            text = re.sub(r"(?m)^  time_step: \S+", "  time_step: 1.0e-3", text)
+            text = re.sub(r"(?m)^  critical_step_safety: \S+", "  critical_step_safety: 1000", text)
+            with open(scenario_copy, "w") as f:
+                f.write(text)
+            before = {d: contents(d) for d in (blown, os.path.join(blown, "snapshots"))}
+            done = run(tool, ["--resume", blown, "--accept-changed-scenario", "--until-time", "0.6", "--snapshots", "400"])
+            after = {d: contents(d) for d in before}
+            kept = {d: {f: v for f, v in after[d].items() if f != "unhealthy_segment.csv"} for d in after}
+            if done.returncode != 3 or kept != before or "unhealthy_segment.csv" not in after[blown]:
+                failures.append(f"a resumed segment that blew up: exit status {done.returncode} (expected 3), "
+                                f"files changed: {[f for d in after for f in after[d] if before[d].get(f) != after[d][f]]}")
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("OK: resumed runs identical to the run in one go (from the second row boundary after a short row); "

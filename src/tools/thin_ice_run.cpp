@@ -191,7 +191,8 @@ std::string loadsRow(const LoadSample& s, std::size_t panels) {
 
 /// One CSV per snapshot: cell pose, whether it is bonded, the size of its bonded piece (cells) and
 /// its world polygon as "x0 y0 x1 y1 ..." [m] in one field.
-void writeSnapshot(const Simulation& sim, const std::string& dir, long row) {
+/// Writes snapshots/cells_ROW.csv and its line in snapshots/index.csv; returns the file's name.
+std::string writeSnapshot(const Simulation& sim, const std::string& dir, long row) {
   const std::vector<thin_ice::CellSnapshot> cells = sim.cells();
   std::ostringstream text;
   text.precision(9);
@@ -209,6 +210,7 @@ void writeSnapshot(const Simulation& sim, const std::string& dir, long row) {
   thin_ice::writeFileAtomically(dir + "/" + name, text.str());
   std::ofstream index(dir + "/index.csv", std::ios::app);  // file, time, pushed length
   index << name << ',' << sim.time() << ',' << sim.pushedLength() << '\n';
+  return name;
 }
 
 std::string formatDuration(double seconds) {
@@ -333,6 +335,11 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
     csv << loadsHeader(panels);
     if (snapshotDue(0.0, false)) writeSnapshot(sim, snapshot_dir, 0);  // the sheet at rest
   }
+  // A resumed segment that goes wrong is taken back whole, its snapshots too: the index as it was
+  // before the segment, and the files the segment wrote.
+  std::error_code no_index;
+  const std::uintmax_t index_size_before = std::filesystem::file_size(snapshot_index, no_index);
+  std::vector<std::string> segment_snapshots;
   Progress progress(sim.time(), cont.start_fraction);
   const Clock::time_point start = Clock::now();
   for (long row = cont.rows + 1, left = stepsLeft(); left > 0; ++row) {
@@ -366,7 +373,7 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
     left = r.interrupted_by != 0 ? 0 : stepsLeft();
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
     progress.report(fraction(), r.last, wall, last_row);
-    if (snapshotDue(fraction(), last_row)) writeSnapshot(sim, snapshot_dir, row);
+    if (snapshotDue(fraction(), last_row)) segment_snapshots.push_back(writeSnapshot(sim, snapshot_dir, row));
   }
   if (r.interrupted_by != 0) {
     std::fprintf(stderr, "thin_ice_run: stopped by signal %d at t = %.6g s, L = %.6g m; writing what was reached\n",
@@ -378,6 +385,16 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
   const std::string kept = cont.active && !r.error.empty() ? o.out + "/unhealthy_segment.csv" : csv_path;
   if (!csv || std::rename((csv_path + ".partial").c_str(), kept.c_str()) != 0) {
     throw std::runtime_error("cannot finish '" + kept + "'");
+  }
+  if (kept != csv_path && !segment_snapshots.empty()) {
+    for (const std::string& name : segment_snapshots) std::filesystem::remove(snapshot_dir + "/" + name);
+    if (no_index) {
+      std::filesystem::remove(snapshot_index);  // the segment made the index: it goes with it
+      std::error_code not_empty;
+      std::filesystem::remove(snapshot_dir, not_empty);  // and the folder, where nothing else is in it
+    } else {
+      std::filesystem::resize_file(snapshot_index, index_size_before);
+    }
   }
   return r;
 }
