@@ -61,6 +61,32 @@ def scenario_of_run(summary):
     return scenario
 
 
+def floating_level(summary):
+    """(h [m], z_rest [m]) of a run's ice: z_rest = h/2 - (rho_i / rho_w) h is where a cell's centroid
+    floats at rest (Archimedes; the model's cells do not tilt), from the run's scenario file and
+    overrides. Raises ValueError naming the file and the keys when they are missing or unphysical."""
+    import yaml
+    file = summary["scenario"]["file"]
+    try:
+        scenario = scenario_of_run(summary)
+        h, rho_i, rho_w = (float(scenario[s][k]) for s, k in (("ice", "thickness"), ("ice", "density"),
+                                                              ("water", "density")))
+    except (OSError, KeyError, TypeError, ValueError, yaml.YAMLError) as e:
+        raise ValueError(f"cannot read ice.thickness, ice.density and water.density of {file}: {e}") from e
+    if not (h > 0 and rho_w > 0 and 0 < rho_i < rho_w):
+        raise ValueError(f"{file}: ice.thickness {h:g}, ice.density {rho_i:g}, water.density {rho_w:g}; "
+                         "allowed: h > 0 and 0 < rho_i < rho_w")
+    return h, 0.5 * h - rho_i / rho_w * h
+
+
+def sheet_size(cells):
+    """Cells in the pushed sheet, the largest piece held together by intact bonds, from a snapshot's
+    rows (column piece_cells, written since 2026-12-02); None for a snapshot without that column."""
+    if not cells or "piece_cells" not in cells[0]:
+        return None
+    return max(int(c["piece_cells"]) for c in cells)
+
+
 def _json(value, indent):
     """value as JSON: objects one key per line, lists of plain values on one line."""
     pad, inner = " " * indent, " " * (indent + 2)

@@ -262,27 +262,23 @@ bool SimNode::onReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
 
 bool SimNode::onStep(thin_ice_sim::Step::Request& request, thin_ice_sim::Step::Response& response) {
   response.success = false;
+  // Counted in double first: a huge duration, or a steps field of 2^32 - 1 sent for -1, is refused
+  // rather than cast into a long that overflows or a call that blocks the node for days.
+  const double wanted = request.duration > 0.0 ? std::ceil(request.duration / sim_->timeStep() - 1e-9)
+                                               : static_cast<double>(request.steps);
   if (!sim_->paused()) {
     response.message = "sim/step needs a paused simulation (call sim/pause first)";
   } else if (!std::isfinite(request.duration) || request.duration < 0.0) {
     response.message = "duration must be finite and >= 0 s";
   } else if (!sim_->healthy()) {
     response.message = "the simulation blew up: " + sim_->lastError() + "; call sim/reset";
+  } else if (wanted > static_cast<double>(settings_.max_steps_per_call)) {
+    std::ostringstream msg;
+    msg << "the request is " << wanted << " time steps (dt = " << sim_->timeStep()
+        << " s); allowed: at most ~max_steps_per_call = " << settings_.max_steps_per_call
+        << " per call (the node serves nothing else while it steps): step in several calls";
+    response.message = msg.str();
   } else {
-    // Counted in double first: a huge duration, or a steps field of 2^32 - 1 sent for -1, is refused
-    // rather than cast into a long that overflows or a call that blocks the node for days.
-    const double wanted = request.duration > 0.0 ? std::ceil(request.duration / sim_->timeStep() - 1e-9)
-                                                 : static_cast<double>(request.steps);
-    if (wanted > static_cast<double>(settings_.max_steps_per_call)) {
-      std::ostringstream msg;
-      msg << "the request is " << wanted << " time steps (dt = " << sim_->timeStep()
-          << " s); allowed: at most ~max_steps_per_call = " << settings_.max_steps_per_call
-          << " per call (the node serves nothing else while it steps): step in several calls";
-      response.message = msg.str();
-      response.sim_time = sim_->time();
-      publishStatus();
-      return true;
-    }
     const long steps = static_cast<long>(wanted);
     if (steps > 0) {
       sim_->setPusherVelocity(applied_velocity_ = commandedVelocity());
