@@ -1,8 +1,9 @@
 // CUDA backend: the step of the CPU backend (src/core/cpu_backend.cpp) with every stage on the
 // device, calling the same inline laws (include/thin_ice_sim/physics/).
 //
-// One step, five kernels (one thread per cell, bond or pair):
+// One step, five kernels (one thread per cell, bond or pair), six with the curvature criterion:
 //   placeCells     world polygons, boxes, (cos, sin) yaw                     placeCell()
+//   heightGradients  the cells' height gradients (curvature criterion only)  cellHeightGradient()
 //   bondForces     RMIB forces and failure, Eqs. 8-13                        rmibBondForce()
 //   contactForces  DEM contacts of the candidate pairs, Eqs. 1-4             demContactForce()
 //   stepCells      gather, water, planes, symplectic Euler, structure loads  stepCell()
@@ -74,17 +75,30 @@ __global__ void placeCells(int n, const RunScalars* run, const CellMotion* motio
                       world + (size_t)k * kV, box + 4 * k);
 }
 
+// Before bondForces: a bond that broke in the last step is still kBondBreaking here and, like a
+// broken one, is left out (on the CPU it is kBondBroken by now: the same bonds count).
+__global__ void heightGradients(int n, const RunScalars* run, const int* offsets, const int* entries,
+                                const unsigned char* state, const int* bond_i, const int* bond_j,
+                                const CellMotion* motion, Vec2* gradient) {
+  const int k = blockIdx.x * blockDim.x + threadIdx.x;
+  if (k >= n || run->stop) return;
+  gradient[k] = cellHeightGradient(k, offsets, entries, state, bond_i, bond_j, motion);
+}
+
 __global__ void bondForces(int bonds, RunScalars* run, ModelConstants c, const int* bond_i, const int* bond_j,
                            const BondRest* rest, const CellMotion* motion, const double* mass, const double* inertia,
-                           const Vec2* turn, unsigned char* state, PairLoad* load) {
+                           const Vec2* turn, const Vec2* gradient, unsigned char* state, PairLoad* load) {
   const int b = blockIdx.x * blockDim.x + threadIdx.x;
   if (b >= bonds || run->stop) return;
   const unsigned char was = state[b];
   if (was == kBondBreaking) state[b] = kBondBroken;  // it applied its last force in the last step
   if (was != kBondIntact) return;
   const int i = bond_i[b], j = bond_j[b];
+  const bool curvature = c.bond.curvature_stress_modulus != 0.0;  // else gradient may be null
+  const Vec2 none = {0.0, 0.0};
   const BondForce f = rmibBondForce(rest[b], bodyOf(motion[i], mass[i], inertia[i]), turn[i],
-                                    bodyOf(motion[j], mass[j], inertia[j]), turn[j], c.bond);
+                                    bodyOf(motion[j], mass[j], inertia[j]), turn[j], c.bond,
+                                    curvature ? gradient[i] : none, curvature ? gradient[j] : none);
   load[b] = bondLoad(f);
   if (f.breaks) {
     state[b] = kBondBreaking;  // for good; its force of this step still acts
@@ -194,6 +208,7 @@ class CudaBackend final : public Backend {
     bond_entries_.upload(bonds.entries);
     bond_load_.resize(bonds_);
     bond_state_.resize(bonds_);
+    if (curvatureCriterion()) height_gradient_.resize(n_);
     motion_.resize(n_);
     reference_.resize(n_);
     world_.resize(static_cast<size_t>(n_) * kV);
@@ -326,6 +341,8 @@ class CudaBackend final : public Backend {
   }
 
  private:
+  bool curvatureCriterion() const { return model_.constants.bond.curvature_stress_modulus != 0.0; }
+
   /// The kernels of one step on stream_ (also what the graph captures).
   void launchStep() {
     const ModelConstants& c = model_.constants;
@@ -333,10 +350,17 @@ class CudaBackend final : public Backend {
     placeCells<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, motion_.get(), vertex_x_.get(), vertex_y_.get(),
                                                          vertex_count_.get(), world_.get(), box_.get(), turn_.get());
     if (bonds_ > 0) {
+      Vec2* gradient = nullptr;
+      if (curvatureCriterion()) {
+        gradient = height_gradient_.get();
+        heightGradients<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, bond_offsets_.get(), bond_entries_.get(),
+                                                                  bond_state_.get(), bond_i_.get(), bond_j_.get(),
+                                                                  motion_.get(), gradient);
+      }
       bondForces<<<blocksFor(bonds_), kThreads, 0, stream_>>>(bonds_, run, c, bond_i_.get(), bond_j_.get(),
                                                                bond_rest_.get(), motion_.get(), mass_.get(),
-                                                               inertia_.get(), turn_.get(), bond_state_.get(),
-                                                               bond_load_.get());
+                                                               inertia_.get(), turn_.get(), gradient,
+                                                               bond_state_.get(), bond_load_.get());
     }
     const int capacity = contacts_.capacity();
     contactForces<<<blocksFor(capacity), kThreads, 0, stream_>>>(
@@ -443,6 +467,7 @@ class CudaBackend final : public Backend {
   DeviceArray<unsigned char> bond_state_;  ///< (bonds) BondState
   DeviceArray<PairLoad> bond_load_;  ///< (bonds)
   DeviceArray<Vec2> world_, turn_;
+  DeviceArray<Vec2> height_gradient_;  ///< (cells) with the curvature criterion only
   DeviceArray<double> box_;
   DeviceArray<StructureContact> structure_;
   DeviceArray<double> totals_, panels_;

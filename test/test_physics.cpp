@@ -4,6 +4,7 @@
 #include <cmath>
 #include <vector>
 
+#include "thin_ice_sim/incidence.hpp"
 #include "thin_ice_sim/physics/bond.hpp"
 #include "thin_ice_sim/physics/contact.hpp"
 #include "thin_ice_sim/physics/integrate.hpp"
@@ -425,6 +426,109 @@ TEST(Bond, RigidTurnOfThePairGivesNoForce) {
   const BondForce g = rmibBondForce(b, i0, kNoTurn, j0, small, bondLaw(0.0));
   // The anchor of j moves by -0.1 * (cos 0.01 - 1, sin 0.01) ~ (5e-6, -1e-3): shear pulls j up.
   EXPECT_GT(g.force_on_j.y, 0.9 * b.k_shear * 0.1 * std::sin(0.01));
+}
+
+TEST(SheetCurvature, APlaneGivesItsSlopeWhateverTheNeighbours) {
+  // Six neighbours at 0.2 m on a hexagon, z = 0.03 x - 0.02 y: the fit is exact.
+  HeightGradientSums sums = {0, 0, 0, 0, 0};
+  for (int k = 0; k < 6; ++k) {
+    const double a = k * 3.14159265358979323846 / 3.0 + 0.1;
+    const Vec2 r = {0.2 * std::cos(a), 0.2 * std::sin(a)};
+    addHeightSample(sums, r, 0.03 * r.x - 0.02 * r.y);
+  }
+  const Vec2 g = heightGradient(sums);
+  EXPECT_NEAR(g.x, 0.03, 1e-15);
+  EXPECT_NEAR(g.y, -0.02, 1e-15);
+  // One neighbour at r = (0.2, 0.1) 5 mm higher: the slope along r, r dz / |r|^2 = (0.02, 0.01).
+  HeightGradientSums one = {0, 0, 0, 0, 0};
+  addHeightSample(one, {0.2, 0.1}, 0.005);
+  EXPECT_NEAR(heightGradient(one).x, 0.02, 1e-15);
+  EXPECT_NEAR(heightGradient(one).y, 0.01, 1e-15);
+  // None: no slope.
+  const HeightGradientSums none = {0, 0, 0, 0, 0};
+  EXPECT_EQ(heightGradient(none).x, 0.0);
+  EXPECT_EQ(heightGradient(none).y, 0.0);
+}
+
+TEST(SheetCurvature, AParabolaAcrossABondGivesItsCurvature) {
+  // Cells on a 0.2 m square grid, 5 along x by 3 along y, bonded to their four neighbours, bent
+  // as z = kappa p^2 / 2 (p = x - 0.4, the parabola's vertex under the middle column) with
+  // kappa = 0.05 1/m, and tilted by 0.04 along y (a plane adds no curvature). By hand, middle row
+  // (cells 5 ... 9 at p = -0.4 ... 0.4), y-sums apart (they only carry the tilt):
+  //   cell 7 (p = 0):   both x-neighbours are kappa 0.2^2 / 2 = 0.001 m higher: g_x = 0;
+  //   cell 8 (p = 0.2): z = 0.001; neighbours at p = 0.4 (+0.003 m) and 0 (-0.001 m):
+  //                     g_x = 0.2 (0.003 + 0.001) / (2 0.2^2) = 0.01 = kappa 0.2;
+  //   bond 7-8:         kappa = (0.01 - 0) / 0.2 = 0.05.
+  const double kappa = 0.05, d = 0.2;
+  std::vector<CellMotion> motion;
+  for (int row = 0; row < 3; ++row) {
+    for (int col = 0; col < 5; ++col) {
+      const double x = d * col - 0.4, y = d * row;  // x = -0.4 ... 0.4: the parabola's vertex in the middle
+      motion.push_back({x + 0.4, y, 0.5 * kappa * x * x + 0.04 * y, 0, 0, 0, 0, 0});
+    }
+  }
+  std::vector<int> bond_i, bond_j;
+  for (int row = 0; row < 3; ++row) {
+    for (int col = 0; col < 5; ++col) {
+      const int c = 5 * row + col;
+      if (col < 4) { bond_i.push_back(c); bond_j.push_back(c + 1); }
+      if (row < 2) { bond_i.push_back(c); bond_j.push_back(c + 5); }
+    }
+  }
+  Incidence incidence;
+  incidence.build(15, bond_i, bond_j);
+  std::vector<unsigned char> state(bond_i.size(), kBondIntact);
+  auto gradient = [&](int c) {
+    return cellHeightGradient(c, incidence.offsets.data(), incidence.entries.data(), state.data(), bond_i.data(),
+                              bond_j.data(), motion.data());
+  };
+  // Middle row, cells 5 ... 9 at x = 0 ... 0.8 (parabola coordinate -0.4 ... 0.4).
+  EXPECT_NEAR(gradient(7).x, 0.0, 1e-15);
+  EXPECT_NEAR(gradient(7).y, 0.04, 1e-15);
+  EXPECT_NEAR(gradient(8).x, kappa * 0.2, 1e-15);
+  EXPECT_NEAR(curvatureAcrossBond(gradient(7), gradient(8), {1.0, 0.0}, d), kappa, 1e-12);
+  EXPECT_NEAR(curvatureAcrossBond(gradient(6), gradient(7), {1.0, 0.0}, d), kappa, 1e-12);
+  // Across the y-bond from 7 to 12 the sheet is only tilted: no curvature.
+  EXPECT_NEAR(curvatureAcrossBond(gradient(7), gradient(12), {0.0, 1.0}, d), 0.0, 1e-12);
+  // A broken bond takes no part: with 7-8 broken, cell 7's x-slope comes from cell 6 alone
+  // (r_x = -0.2 m, 0.001 m higher): g_x = -0.2 0.001 / 0.2^2 = -0.005.
+  for (size_t b = 0; b < bond_i.size(); ++b) {
+    if (bond_i[b] == 7 && bond_j[b] == 8) state[b] = kBondBroken;
+  }
+  EXPECT_NEAR(gradient(7).x, -0.005, 1e-15);
+}
+
+TEST(Bond, CurvatureCriterionBreaksALevelBondOnTheSheetsCurvature) {
+  // E = 300 MPa, h = 0.05 m, nu = 0.3: E h / (2 (1 - nu^2)) = 15e6 / 1.82 = 8.2418e6 Pa m, so
+  // sigma_f = 100 kPa is reached at kappa = 1e5 / 8.2418e6 = 0.012133 1/m. The unit bond (level,
+  // unstretched: Eq. 13 alone sees no stress) between cells whose gradients differ by kappa d.
+  const double modulus = plateStressPerCurvature(300e6, 0.3, 0.05);
+  EXPECT_NEAR(modulus, 15e6 / 1.82, 1e-6);
+  const BondRest b = unitBond();
+  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const BodyState j = {{0.2, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  BondConstants law = bondLaw(0.0);
+  law.curvature_stress_modulus = modulus;
+  const double kappa_break = 100e3 / modulus;
+  for (const double factor : {0.99, 1.01}) {
+    // The same slope on both sides breaks nothing; a slope that grows by kappa d across does.
+    const Vec2 g_i = {0.01, 0.0}, g_j = {0.01 - factor * kappa_break * 0.2, 0.0};  // hogging or sagging alike
+    const BondForce f = rmibBondForce(b, i, kNoTurn, j, kNoTurn, law, g_i, g_j);
+    EXPECT_NEAR(f.sigma_v, factor * 100e3, 1e-6 * 100e3);
+    EXPECT_EQ(f.breaks, factor > 1.0);
+    EXPECT_FALSE(rmibBondForce(b, i, kNoTurn, j, kNoTurn, law, g_i, g_i).breaks);
+    EXPECT_FALSE(rmibBondForce(b, i, kNoTurn, j, kNoTurn, bondLaw(0.0), g_i, g_j).breaks) << "criterion off";
+  }
+  // The curvature's component along the bond counts: across it (along y) it does not.
+  EXPECT_FALSE(rmibBondForce(b, i, kNoTurn, j, kNoTurn, law, {0.0, 0.0}, {0.0, 2.0 * kappa_break * 0.2}).breaks);
+  // Compressed to sigma_c = 40 kPa with k = 0.5, the threshold is 80 kPa for it too.
+  law.compression_coupling = 0.5;
+  const double squeeze = 40e3 * 0.05 * b.edge_length / b.k_normal;
+  const BodyState pressed = {{0.2 - squeeze, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  for (const double factor : {0.99, 1.01}) {
+    const Vec2 g_j = {factor * 0.8 * kappa_break * 0.2, 0.0};
+    EXPECT_EQ(rmibBondForce(b, i, kNoTurn, pressed, kNoTurn, law, {0.0, 0.0}, g_j).breaks, factor > 1.0);
+  }
 }
 
 TEST(PlaneContact, VerticalPlaneVolumeByHand) {

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "thin_ice_sim/ice_sheet.hpp"
+#include "thin_ice_sim/model.hpp"
 #include "thin_ice_sim/scenario.hpp"
 
 namespace thin_ice {
@@ -276,6 +278,32 @@ TEST_F(ScenarioFileTest, VerticalSlipFrictionIsOptionalAndTakesEitherReading) {
     EXPECT_NE(m.find("ice.vertical_slip_friction"), std::string::npos) << m;
     EXPECT_NE(m.find("expected level_only or edge_face"), std::string::npos) << m;
     EXPECT_NE(m.find("sticky"), std::string::npos) << m;
+  }
+}
+
+TEST_F(ScenarioFileTest, CurvatureFailureIsOffUnlessAskedForAndReachesTheBondLaw) {
+  // The shipped scenarios name it, false; left out it is false too; true gives the bond law the
+  // plate stress per curvature E h / (2 (1 - nu^2)) (physics/sheet_curvature.hpp).
+  const std::string path = kScenarioDir + "quick.yaml";
+  const Params shipped = loadScenario(path).params;
+  EXPECT_FALSE(shipped.ice.curvature_failure);
+  const std::string without = write("without.yaml", withLine(quick_, "ice", "curvature_failure", ""));
+  EXPECT_FALSE(loadScenario(without).params.ice.curvature_failure);
+  const Params on = loadScenario(path, {"ice.curvature_failure=true"}).params;
+  EXPECT_TRUE(on.ice.curvature_failure);
+  const IceSheet sheet = generateIceSheet(on.sheet);
+  const double per_curvature = on.ice.youngs_modulus * on.ice.thickness / (2.0 * (1.0 - 0.3 * 0.3));
+  ASSERT_EQ(on.ice.poisson_ratio, 0.3);
+  EXPECT_NEAR(buildModel(on, sheet, "on").constants.bond.curvature_stress_modulus, per_curvature, 1e-9 * per_curvature);
+  EXPECT_EQ(buildModel(shipped, sheet, "off").constants.bond.curvature_stress_modulus, 0.0);
+  try {
+    loadScenario(path, {"ice.curvature_failure=sometimes"});
+    FAIL() << "a value that is not a boolean was accepted";
+  } catch (const ScenarioError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("ice.curvature_failure"), std::string::npos) << m;
+    EXPECT_NE(m.find("true or false"), std::string::npos) << m;
+    EXPECT_NE(m.find("sometimes"), std::string::npos) << m;
   }
 }
 

@@ -37,6 +37,9 @@ struct IceParams {
   double smoothing_exponent_v = 1.0;    ///< n of K_v (Eq. 6) for vertical forces [-]
   double compression_coupling = 0.0;    ///< k of Eq. (13) [-]
   VerticalStressModel vertical_stress = VerticalStressModel::kBending;
+  /// Also break a bond when the plate stress of the sheet's curvature across it, E h |kappa| /
+  /// (2 (1 - nu^2)), exceeds Eq. (13)'s threshold (beyond the paper: physics/sheet_curvature.hpp).
+  bool curvature_failure = false;
   double friction_ice_ice = 0.3;        ///< Coulomb coefficient between cells [-]
   VerticalSlipFrictionModel vertical_slip_friction = VerticalSlipFrictionModel::kEdgeFace;
   double contact_damping_ratio = 0.2;   ///< zeta of DEM contacts (fraction of critical) [-]

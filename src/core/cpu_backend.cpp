@@ -1,5 +1,6 @@
 // CPU backend. One step (Algorithm 1, inner loop body):
 //   world polygons and bounding boxes of every cell          (parallel over cells)
+//   height gradients, with the curvature criterion only       (parallel over cells)   sheet_curvature.hpp
 //   RMIB bond forces and failure (cpu_bond_pass.cpp)          (parallel over bonds)   Eqs. 8-13
 //   DEM contact forces of the candidate pairs                 (parallel over pairs)   Eqs. 1-4
 //   per cell: gather bond and contact forces in a fixed order, water, structure, pusher,
@@ -48,6 +49,7 @@ class CpuBackend final : public Backend {
     loaded_.assign(n, 0);
     bond_load_.resize(model_.bond_rest.size());
     bond_incidence_.build(n, model_.bond_i, model_.bond_j);
+    if (model_.constants.bond.curvature_stress_modulus != 0.0) height_gradient_.resize(n);
     reset();
   }
 
@@ -238,9 +240,21 @@ class CpuBackend final : public Backend {
     }
   }
 
+  /// The cells' height gradients for the curvature criterion (physics/sheet_curvature.hpp).
+  void computeHeightGradients() {
+    const int n = model_.cell_count;
+#pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_)
+    for (int k = 0; k < n; ++k) {
+      height_gradient_[k] = cellHeightGradient(k, bond_incidence_.offsets.data(), bond_incidence_.entries.data(),
+                                               bond_state_.data(), model_.bond_i.data(), model_.bond_j.data(),
+                                               motion_.data());
+    }
+  }
+
   void computeBondForces() {
-    const int newly_broken =
-        bond_pass_.run(motion_.data(), turn_.data(), bond_state_.data(), bond_load_.data(), threads_, parallel_);
+    if (!height_gradient_.empty()) computeHeightGradients();
+    const int newly_broken = bond_pass_.run(motion_.data(), turn_.data(), height_gradient_.data(), bond_state_.data(),
+                                            bond_load_.data(), threads_, parallel_);
     if (newly_broken > 0) {
       broken_count_ += newly_broken;
       rebuild_requested_ = true;  // the pair now needs a DEM contact
@@ -357,6 +371,7 @@ class CpuBackend final : public Backend {
   std::vector<CellMotion> motion_, reference_;
   std::vector<Vec2> world_;               ///< (cells x kV) world vertices [m]
   std::vector<Vec2> turn_;                ///< (cells) (cos yaw, sin yaw)
+  std::vector<Vec2> height_gradient_;     ///< (cells) g of sheet_curvature.hpp; empty without the criterion
   std::vector<int> just_broken_;          ///< bonds broken in the current step
   std::vector<double> box_;               ///< (cells x 4) x0 x1 y0 y1 [m]
   std::vector<StructureContact> structure_;

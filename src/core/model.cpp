@@ -48,7 +48,8 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
             ice.compressive_strength,
             ice.compression_coupling,
             verticalStressReading(ice.vertical_stress),
-            floatingPlateMomentArm(ice.youngs_modulus, ice.poisson_ratio, h, p.water.density, p.water.gravity)};
+            floatingPlateMomentArm(ice.youngs_modulus, ice.poisson_ratio, h, p.water.density, p.water.gravity),
+            ice.curvature_failure ? plateStressPerCurvature(ice.youngs_modulus, ice.poisson_ratio, h) : 0.0};
   c.water = {p.water.density,       p.water.gravity,        h, p.water.linear_drag,
              p.water.quadratic_drag, p.water.vertical_linear_drag, p.water.vertical_quadratic_drag};
   // The structure's friction is integrated at the sub-step dt/n (cell_forces.hpp).
