@@ -15,6 +15,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <vector>
 
 #include "cpu_backend.hpp"
 #include "thin_ice_sim/backend.hpp"
@@ -38,9 +39,11 @@ class GpuParity : public ::testing::Test {
     if (!missing.empty()) GTEST_SKIP() << "no GPU run: " << missing;
   }
 
-  static Model stripModel() {
-    const Scenario s = loadScenario(kQuick, {"sheet.length=1.0", "structure.toe_x=1.1",
-                                             "bottom.distance_from_structure=0.5"});
+  static Model stripModel(const std::vector<std::string>& more_overrides = {}) {
+    std::vector<std::string> overrides = {"sheet.length=1.0", "structure.toe_x=1.1",
+                                          "bottom.distance_from_structure=0.5"};
+    overrides.insert(overrides.end(), more_overrides.begin(), more_overrides.end());
+    const Scenario s = loadScenario(kQuick, overrides);
     return buildModel(s.params, generateIceSheet(s.params.sheet), s.source);
   }
 
@@ -97,6 +100,20 @@ TEST_F(GpuParity, FreeCellsCollidingAgreeAfter50Steps) {
 TEST_F(GpuParity, IntactSheetPressedIntoTheStructureAgreesAfter50Steps) {
   Model model = stripModel();
   for (CellMotion& m : model.initial) m.x += 0.12;  // the front row reaches into the face
+  expectSameStates(model, 50, 1e-9);
+}
+
+TEST_F(GpuParity, SheetBentPastItsBreakingCurvatureBreaksAlikeWithTheCurvatureCriterion) {
+  // ice.curvature_failure on, the strip bent along x as z = kappa_0 x^3 / 6 (curvature kappa_0 x,
+  // kappa_0 = 0.05 1/m^2), so that bonds break by their curvature from the first step on: the
+  // height-gradient kernel and the bond kernel must pick the same ones as the CPU.
+  Model model = stripModel({"ice.curvature_failure=true"});
+  ASSERT_GT(model.constants.bond.curvature_stress_modulus, 0.0);
+  const double x0 = model.initial.front().x;
+  for (CellMotion& m : model.initial) m.z += 0.05 * std::pow(m.x - x0, 3) / 6.0;
+  std::unique_ptr<Backend> cpu = makeCpuBackend(model, 1);
+  cpu->step(1, model.initial_pusher_velocity);
+  EXPECT_GT(cpu->loads().broken_bonds, 0) << "the bend should break bonds at once";
   expectSameStates(model, 50, 1e-9);
 }
 
