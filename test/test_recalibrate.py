@@ -91,6 +91,17 @@ def main():
         done = tool(source, analyse_tool, low, "--alpha", "1.7")
         if done.returncode != 2 or "has a checkpoint" not in done.stderr:
             failures.append(f"--alpha 1.7 on a run with a checkpoint at 0.63: exit {done.returncode}, {done.stderr.strip()!r}")
+        # ... and when its scenario cannot be loaded, the message says why --alpha is not enough.
+        lost = os.path.join(tmp, "lost")
+        shutil.copytree(low, lost)
+        path = os.path.join(lost, "summary.json")
+        summary = json.load(open(path))
+        summary["scenario"]["file"] = os.path.join(tmp, "no_such_scenario.yaml")
+        json.dump(summary, open(path, "w"))
+        done = tool(source, analyse_tool, lost, "--alpha", "1.7")
+        if done.returncode != 2 or "checkpoint.bin" not in done.stderr or "give --alpha" in done.stderr:
+            failures.append(f"--alpha on a run with a checkpoint and no scenario: exit {done.returncode}, "
+                            f"{done.stderr.strip()!r}")
         os.remove(os.path.join(low, "checkpoint.bin"))
 
         # 0.63 brought to 1.7 against the run made at 1.7.
