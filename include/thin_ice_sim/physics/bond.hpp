@@ -185,10 +185,14 @@ TIS_HD BondForce rmibBondForce(const BondRest& b, const BodyState& i, Vec2 turn_
   const double section = c.thickness * b.edge_length;                        // Eq. (13)
   f.sigma_h = elastic_h / section;
   f.sigma_c = elastic_h < 0.0 ? -f.sigma_h : 0.0;  // the same quotient, negated exactly
-  // Without the curvature criterion the modulus is 0 and fmax(sigma_v, 0) is sigma_v (>= 0).
-  const double sigma_curvature =
-      c.curvature_stress_modulus * fabs(curvatureAcrossBond(gradient_i, gradient_j, n, b.distance));
-  f.sigma_v = fmax(verticalBondStress(elastic_v, b, c), sigma_curvature);
+  f.sigma_v = verticalBondStress(elastic_v, b, c);
+  // A modulus of 0 means the criterion is off: then nothing here is computed (where the modulus is
+  // a constant 0, as in the CPU pass's instances without it, the compiler drops the division).
+  if (c.curvature_stress_modulus != 0.0) {
+    const double sigma_curvature =
+        c.curvature_stress_modulus * fabs(curvatureAcrossBond(gradient_i, gradient_j, n, b.distance));
+    f.sigma_v = fmax(f.sigma_v, sigma_curvature);
+  }
   f.breaks = bondFails(f.sigma_h, f.sigma_v, f.sigma_c, dz, c);
   return f;
 }
