@@ -121,12 +121,12 @@ TEST_P(CpuBondPassTest, GivesTheLawsLoadsAndFailuresBondByBond) {
     const PairLoad want = bondLoad(f);
     // The vectorised arithmetic may place its fused multiply-adds elsewhere: the last bits only.
     const double scale = std::fabs(want.force_on_j.x) + std::fabs(want.force_on_j.y) + std::fabs(want.fz_on_j) + 1e-30;
-    const double torque_scale = std::fabs(want.torque_on_i) + std::fabs(want.torque_on_j) + 1e-30;
+    const double torque_scale = std::fabs(want.torque[0]) + std::fabs(want.torque[1]) + 1e-30;
     EXPECT_NEAR(load[b].force_on_j.x, want.force_on_j.x, 1e-12 * scale) << "bond " << b;
     EXPECT_NEAR(load[b].force_on_j.y, want.force_on_j.y, 1e-12 * scale) << "bond " << b;
     EXPECT_NEAR(load[b].fz_on_j, want.fz_on_j, 1e-12 * scale) << "bond " << b;
-    EXPECT_NEAR(load[b].torque_on_i, want.torque_on_i, 1e-12 * torque_scale) << "bond " << b;
-    EXPECT_NEAR(load[b].torque_on_j, want.torque_on_j, 1e-12 * torque_scale) << "bond " << b;
+    EXPECT_NEAR(load[b].torque[0], want.torque[0], 1e-12 * torque_scale) << "bond " << b;
+    EXPECT_NEAR(load[b].torque[1], want.torque[1], 1e-12 * torque_scale) << "bond " << b;
     EXPECT_EQ(state[b], f.breaks ? kBondBreaking : kBondIntact) << "bond " << b;
     expected_broken += f.breaks ? 1 : 0;
   }

@@ -52,8 +52,8 @@ long long forceBlock(const Model& model, const BondRestColumns& r, int first, in
     load[b].force_on_j.x = l.force_on_j.x;
     load[b].force_on_j.y = l.force_on_j.y;
     load[b].fz_on_j = l.fz_on_j;
-    load[b].torque_on_i = l.torque_on_i;
-    load[b].torque_on_j = l.torque_on_j;
+    load[b].torque[0] = l.torque[0];
+    load[b].torque[1] = l.torque[1];
     breaks[t] = f.breaks ? 1 : 0;
     any_breaks |= breaks[t];
   }

@@ -115,7 +115,7 @@ TIS_HD Vec2 cellHeightGradient(int k, const int* offsets, const int* entries, co
 
 /// The load of a bond force on its two cells: the moments act through the anchors.
 TIS_HD PairLoad bondLoad(const BondForce& f) {
-  return {f.force_on_j, f.fz_on_j, cross(f.arm_i, -f.force_on_j), cross(f.arm_j, f.force_on_j)};
+  return {f.force_on_j, f.fz_on_j, {cross(f.arm_i, -f.force_on_j), cross(f.arm_j, f.force_on_j)}};
 }
 
 /// sigma_v of Eq. (13) in the scenario's reading (VerticalStressReading).

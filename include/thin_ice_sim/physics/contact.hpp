@@ -90,13 +90,14 @@ struct PairForce {
 struct PairLoad {
   Vec2 force_on_j;     ///< [N] horizontal force on j; i gets the opposite
   double fz_on_j;      ///< [N] vertical force on j; i gets the opposite
-  double torque_on_i;  ///< [N m] yaw moment of -force_on_j about i's centroid
-  double torque_on_j;  ///< [N m] yaw moment of force_on_j about j's centroid
+  /// [N m] yaw moments: [0] of -force_on_j about i's centroid, [1] of force_on_j about j's.
+  /// Indexed by the end (0: i, 1: j), so a cell's gather picks its own without a branch.
+  double torque[2];
 };
 
 /// The load of a contact force on cells centred at centre_i and centre_j (the moments of Eq. 4).
 TIS_HD PairLoad contactLoad(const PairForce& f, Vec2 centre_i, Vec2 centre_j) {
-  return {f.force_on_j, f.fz_on_j, cross(f.point - centre_i, -f.force_on_j), cross(f.point - centre_j, f.force_on_j)};
+  return {f.force_on_j, f.fz_on_j, {cross(f.point - centre_i, -f.force_on_j), cross(f.point - centre_j, f.force_on_j)}};
 }
 
 /// Inverse effective mass [1/kg] of a slip at `point` of body b: 1/m + |r|^2/I (an upper bound
