@@ -1,9 +1,12 @@
 // CUDA backend: the step of the CPU backend (src/core/cpu_backend.cpp) with every stage on the
 // device, calling the same inline laws (include/thin_ice_sim/physics/).
 //
-// One step, five kernels (one thread per cell, bond or pair), six with the curvature criterion:
+// One step, five kernels (one thread per cell, bond or pair), six with the curvature criterion,
+// nine with plate bending:
 //   placeCells     world polygons, boxes, (cos, sin) yaw                     placeCell()
 //   heightGradients  the cells' height gradients (curvature criterion only)  cellHeightGradient()
+//   plateGradients, plateBondMoments, plateMoments, plateForces
+//                  plate bending only (gradients and P, q_b, nu_k, F_m)      sheet_plate.hpp
 //   bondForces     RMIB forces and failure, Eqs. 8-13                        rmibBondForce()
 //   contactForces  DEM contacts of the candidate pairs, Eqs. 1-4             demContactForce()
 //   stepCells      gather, water, planes, symplectic Euler, structure loads  stepCell()
@@ -38,6 +41,7 @@
 #include "thin_ice_sim/incidence.hpp"
 #include "thin_ice_sim/model.hpp"
 #include "thin_ice_sim/physics/cell_forces.hpp"
+#include "thin_ice_sim/physics/sheet_plate.hpp"
 
 namespace thin_ice {
 namespace cuda {
@@ -83,6 +87,46 @@ __global__ void heightGradients(int n, const RunScalars* run, const int* offsets
   const int k = blockIdx.x * blockDim.x + threadIdx.x;
   if (k >= n || run->stop) return;
   gradient[k] = cellHeightGradient(k, offsets, entries, state, bond_i, bond_j, motion);
+}
+
+// Plate bending (sheet_plate.hpp): the gradients with their fits' P (the curvature criterion
+// then reads the same gradients), q_b of each intact bond, nu_k and F_m of each cell. Like
+// heightGradients, before bondForces: the bonds intact at the start of the step count.
+__global__ void plateGradients(int n, const RunScalars* run, const int* offsets, const int* entries,
+                               const unsigned char* state, const int* bond_i, const int* bond_j,
+                               const CellMotion* motion, Vec2* gradient, SymmetricMatrix2* inverse) {
+  const int k = blockIdx.x * blockDim.x + threadIdx.x;
+  if (k >= n || run->stop) return;
+  const HeightGradientSums sums = cellHeightGradientSums(k, offsets, entries, state, bond_i, bond_j, motion);
+  gradient[k] = heightGradient(sums);
+  inverse[k] = heightGradientInverse(sums);
+}
+
+__global__ void plateBondMoments(int bonds, const RunScalars* run, double stiffness, const int* bond_i,
+                                 const int* bond_j, const BondRest* rest, const Vec2* turn, const Vec2* gradient,
+                                 const unsigned char* state, Vec2* bond_moment) {
+  const int b = blockIdx.x * blockDim.x + threadIdx.x;
+  if (b >= bonds || run->stop) return;
+  const int i = bond_i[b], j = bond_j[b];
+  bond_moment[b] = state[b] == kBondIntact
+                       ? bondPlateMoment(stiffness, rest[b], turn[i], turn[j], gradient[i], gradient[j])
+                       : Vec2{0.0, 0.0};
+}
+
+__global__ void plateMoments(int n, const RunScalars* run, const int* offsets, const int* entries,
+                             const unsigned char* state, const Vec2* bond_moment, const SymmetricMatrix2* inverse,
+                             Vec2* moment) {
+  const int k = blockIdx.x * blockDim.x + threadIdx.x;
+  if (k >= n || run->stop) return;
+  moment[k] = cellPlateMoment(k, offsets, entries, state, bond_moment, inverse[k]);
+}
+
+__global__ void plateForces(int n, const RunScalars* run, const int* offsets, const int* entries,
+                            const unsigned char* state, const int* bond_i, const int* bond_j,
+                            const CellMotion* motion, const Vec2* moment, double* plate_fz) {
+  const int k = blockIdx.x * blockDim.x + threadIdx.x;
+  if (k >= n || run->stop) return;
+  plate_fz[k] = cellPlateForce(k, offsets, entries, state, bond_i, bond_j, motion, moment);
 }
 
 __global__ void bondForces(int bonds, RunScalars* run, ModelConstants c, const int* bond_i, const int* bond_j,
@@ -208,7 +252,13 @@ class CudaBackend final : public Backend {
     bond_entries_.upload(bonds.entries);
     bond_load_.resize(bonds_);
     bond_state_.resize(bonds_);
-    if (curvatureCriterion()) height_gradient_.resize(n_);
+    if (curvatureCriterion() || plateBending()) height_gradient_.resize(n_);
+    if (plateBending()) {
+      plate_inverse_.resize(n_);
+      plate_bond_moment_.resize(bonds_);
+      plate_moment_.resize(n_);
+      plate_fz_.resize(n_);
+    }
     motion_.resize(n_);
     reference_.resize(n_);
     world_.resize(static_cast<size_t>(n_) * kV);
@@ -342,6 +392,7 @@ class CudaBackend final : public Backend {
 
  private:
   bool curvatureCriterion() const { return model_.constants.bond.curvature_stress_modulus != 0.0; }
+  bool plateBending() const { return model_.constants.plate_bond_stiffness != 0.0; }
 
   /// The kernels of one step on stream_ (also what the graph captures).
   void launchStep() {
@@ -351,7 +402,21 @@ class CudaBackend final : public Backend {
                                                          vertex_count_.get(), world_.get(), box_.get(), turn_.get());
     if (bonds_ > 0) {
       Vec2* gradient = nullptr;
-      if (curvatureCriterion()) {
+      if (plateBending()) {
+        gradient = height_gradient_.get();
+        plateGradients<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, bond_offsets_.get(), bond_entries_.get(),
+                                                                 bond_state_.get(), bond_i_.get(), bond_j_.get(),
+                                                                 motion_.get(), gradient, plate_inverse_.get());
+        plateBondMoments<<<blocksFor(bonds_), kThreads, 0, stream_>>>(
+            bonds_, run, c.plate_bond_stiffness, bond_i_.get(), bond_j_.get(), bond_rest_.get(), turn_.get(), gradient,
+            bond_state_.get(), plate_bond_moment_.get());
+        plateMoments<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, bond_offsets_.get(), bond_entries_.get(),
+                                                               bond_state_.get(), plate_bond_moment_.get(),
+                                                               plate_inverse_.get(), plate_moment_.get());
+        plateForces<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, bond_offsets_.get(), bond_entries_.get(),
+                                                              bond_state_.get(), bond_i_.get(), bond_j_.get(),
+                                                              motion_.get(), plate_moment_.get(), plate_fz_.get());
+      } else if (curvatureCriterion()) {
         gradient = height_gradient_.get();
         heightGradients<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, bond_offsets_.get(), bond_entries_.get(),
                                                                   bond_state_.get(), bond_i_.get(), bond_j_.get(),
@@ -385,7 +450,8 @@ class CudaBackend final : public Backend {
                                contacts_.incidenceOffsets(),
                                contacts_.incidenceEntries(),
                                contacts_.touching(),
-                               contacts_.load()};
+                               contacts_.load(),
+                               plateBending() && bonds_ > 0 ? plate_fz_.get() : nullptr};
     stepCells<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, c, in, reference_.get(), motion_.get(),
                                                         structure_.get(), totals_.get(), panels_.get());
     finishStep<<<1, 1, 0, stream_>>>(run, c.time_step, c.max_steps_between_rebuilds);
@@ -467,7 +533,10 @@ class CudaBackend final : public Backend {
   DeviceArray<unsigned char> bond_state_;  ///< (bonds) BondState
   DeviceArray<PairLoad> bond_load_;  ///< (bonds)
   DeviceArray<Vec2> world_, turn_;
-  DeviceArray<Vec2> height_gradient_;  ///< (cells) with the curvature criterion only
+  DeviceArray<Vec2> height_gradient_;  ///< (cells) with the curvature criterion or plate bending only
+  DeviceArray<SymmetricMatrix2> plate_inverse_;  ///< (cells) P_k [1/m^2], plate bending only
+  DeviceArray<Vec2> plate_bond_moment_, plate_moment_;  ///< (bonds) q_b [N m], (cells) nu_k [N/m]
+  DeviceArray<double> plate_fz_;  ///< (cells) plate force [N]
   DeviceArray<double> box_;
   DeviceArray<StructureContact> structure_;
   DeviceArray<double> totals_, panels_;

@@ -117,6 +117,16 @@ TEST_F(GpuParity, SheetBentPastItsBreakingCurvatureBreaksAlikeWithTheCurvatureCr
   expectSameStates(model, 50, 1e-9);
 }
 
+TEST_F(GpuParity, SheetBentWithPlateBendingAndTheCurvatureCriterionAgreesAfter50Steps) {
+  // ice.plate_bending and ice.curvature_failure on, the strip bent as in the case above: the four
+  // plate kernels must give each cell the CPU's plate force, and the bonds must break alike.
+  Model model = stripModel({"ice.plate_bending=true", "ice.curvature_failure=true"});
+  ASSERT_GT(model.constants.plate_bond_stiffness, 0.0);
+  const double x0 = model.initial.front().x;
+  for (CellMotion& m : model.initial) m.z += 0.05 * std::pow(m.x - x0, 3) / 6.0;
+  expectSameStates(model, 50, 1e-9);
+}
+
 TEST_F(GpuParity, ShortStripLoadsAndBreaksAlikeOverItsFirstHalfSecond) {
   const Scenario s = loadScenario(kQuick, {"sheet.length=1.0", "structure.toe_x=1.1",
                                            "bottom.distance_from_structure=0.5", "numerics.threads=1"});

@@ -307,6 +307,33 @@ TEST_F(ScenarioFileTest, CurvatureFailureIsOffUnlessAskedForAndReachesTheBondLaw
   }
 }
 
+TEST_F(ScenarioFileTest, PlateBendingIsOffUnlessAskedForAndReachesTheModel) {
+  // The shipped scenarios name it, false; left out it is false too; true gives the model
+  // D' = 8 E h^3 / (36 (1 - nu^2)) (physics/sheet_plate.hpp).
+  const std::string path = kScenarioDir + "quick.yaml";
+  const Params shipped = loadScenario(path).params;
+  EXPECT_FALSE(shipped.ice.plate_bending);
+  const std::string without = write("without.yaml", withLine(quick_, "ice", "plate_bending", ""));
+  EXPECT_FALSE(loadScenario(without).params.ice.plate_bending);
+  const Params on = loadScenario(path, {"ice.plate_bending=true"}).params;
+  EXPECT_TRUE(on.ice.plate_bending);
+  const IceSheet sheet = generateIceSheet(on.sheet);
+  const double h = on.ice.thickness;
+  const double stiffness = 8.0 * on.ice.youngs_modulus * h * h * h / (36.0 * (1.0 - 0.3 * 0.3));
+  ASSERT_EQ(on.ice.poisson_ratio, 0.3);
+  EXPECT_NEAR(buildModel(on, sheet, "on").constants.plate_bond_stiffness, stiffness, 1e-9 * stiffness);
+  EXPECT_EQ(buildModel(shipped, sheet, "off").constants.plate_bond_stiffness, 0.0);
+  try {
+    loadScenario(path, {"ice.plate_bending=maybe"});
+    FAIL() << "a value that is not a boolean was accepted";
+  } catch (const ScenarioError& e) {
+    const std::string m = e.what();
+    EXPECT_NE(m.find("ice.plate_bending"), std::string::npos) << m;
+    EXPECT_NE(m.find("true or false"), std::string::npos) << m;
+    EXPECT_NE(m.find("maybe"), std::string::npos) << m;
+  }
+}
+
 TEST_F(ScenarioFileTest, OverridesApplyAfterTheFileAndChangeTheHash) {
   const std::string path = kScenarioDir + "quick.yaml";
   const Scenario base = loadScenario(path);

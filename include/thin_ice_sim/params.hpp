@@ -40,6 +40,9 @@ struct IceParams {
   /// Also break a bond when the plate stress of the sheet's curvature across it, E h |kappa| /
   /// (2 (1 - nu^2)), exceeds Eq. (13)'s threshold (beyond the paper: physics/sheet_curvature.hpp).
   bool curvature_failure = false;
+  /// Give the bonded sheet a Kirchhoff plate's bending stiffness through the cells' heights
+  /// (beyond the paper: physics/sheet_plate.hpp).
+  bool plate_bending = false;
   double friction_ice_ice = 0.3;        ///< Coulomb coefficient between cells [-]
   VerticalSlipFrictionModel vertical_slip_friction = VerticalSlipFrictionModel::kEdgeFace;
   double contact_damping_ratio = 0.2;   ///< zeta of DEM contacts (fraction of critical) [-]

@@ -1,6 +1,8 @@
 // CPU backend. One step (Algorithm 1, inner loop body):
 //   world polygons and bounding boxes of every cell          (parallel over cells)
 //   height gradients, with the curvature criterion only       (parallel over cells)   sheet_curvature.hpp
+//   with plate bending: height gradients and their fits' P,   (parallel over cells,   sheet_plate.hpp
+//   the bonds' q_b, the cells' nu_k and plate forces           bonds, cells, cells)
 //   RMIB bond forces and failure (cpu_bond_pass.cpp)          (parallel over bonds)   Eqs. 8-13
 //   DEM contact forces of the candidate pairs                 (parallel over pairs)   Eqs. 1-4
 //   per cell: gather bond and contact forces in a fixed order, water, structure, pusher,
@@ -22,6 +24,7 @@
 #include "cpu_bond_pass.hpp"
 #include "thin_ice_sim/incidence.hpp"
 #include "thin_ice_sim/neighbour_search.hpp"
+#include "thin_ice_sim/physics/sheet_plate.hpp"
 
 namespace thin_ice {
 namespace {
@@ -49,7 +52,13 @@ class CpuBackend final : public Backend {
     loaded_.assign(n, 0);
     bond_load_.resize(model_.bond_rest.size());
     bond_incidence_.build(n, model_.bond_i, model_.bond_j);
-    if (model_.constants.bond.curvature_stress_modulus != 0.0) height_gradient_.resize(n);
+    if (model_.constants.bond.curvature_stress_modulus != 0.0 || plateBending()) height_gradient_.resize(n);
+    if (plateBending()) {
+      plate_inverse_.resize(n);
+      plate_bond_moment_.resize(model_.bond_rest.size());
+      plate_moment_.resize(n);
+      plate_fz_.resize(n);
+    }
     reset();
   }
 
@@ -251,8 +260,52 @@ class CpuBackend final : public Backend {
     }
   }
 
+  bool plateBending() const { return model_.constants.plate_bond_stiffness != 0.0; }
+
+  /// The plate's vertical force on every cell (sheet_plate.hpp), from the bonds intact at the
+  /// start of the step; also the height gradients, which the curvature criterion then reads.
+  void computePlateForces() {
+    const int n = model_.cell_count;
+    const int bonds = static_cast<int>(model_.bond_rest.size());
+    const double stiffness = model_.constants.plate_bond_stiffness;
+    const int* offsets = bond_incidence_.offsets.data();
+    const int* entries = bond_incidence_.entries.data();
+    const unsigned char* state = bond_state_.data();
+#pragma omp parallel num_threads(threads_) if (parallel_)
+    {
+#pragma omp for schedule(static)
+      for (int k = 0; k < n; ++k) {
+        const HeightGradientSums sums = cellHeightGradientSums(k, offsets, entries, state, model_.bond_i.data(),
+                                                               model_.bond_j.data(), motion_.data());
+        height_gradient_[k] = heightGradient(sums);
+        plate_inverse_[k] = heightGradientInverse(sums);
+      }
+#pragma omp for schedule(static)
+      for (int b = 0; b < bonds; ++b) {
+        const int i = model_.bond_i[b], j = model_.bond_j[b];
+        plate_bond_moment_[b] = state[b] == kBondIntact
+                                    ? bondPlateMoment(stiffness, model_.bond_rest[b], turn_[i], turn_[j],
+                                                      height_gradient_[i], height_gradient_[j])
+                                    : Vec2{0.0, 0.0};
+      }
+#pragma omp for schedule(static)
+      for (int k = 0; k < n; ++k) {
+        plate_moment_[k] = cellPlateMoment(k, offsets, entries, state, plate_bond_moment_.data(), plate_inverse_[k]);
+      }
+#pragma omp for schedule(static)
+      for (int k = 0; k < n; ++k) {
+        plate_fz_[k] = cellPlateForce(k, offsets, entries, state, model_.bond_i.data(), model_.bond_j.data(),
+                                      motion_.data(), plate_moment_.data());
+      }
+    }
+  }
+
   void computeBondForces() {
-    if (!height_gradient_.empty()) computeHeightGradients();
+    if (plateBending()) {
+      computePlateForces();
+    } else if (!height_gradient_.empty()) {
+      computeHeightGradients();
+    }
     const int newly_broken = bond_pass_.run(motion_.data(), turn_.data(), height_gradient_.data(), bond_state_.data(),
                                             bond_load_.data(), threads_, parallel_);
     if (newly_broken > 0) {
@@ -317,7 +370,8 @@ class CpuBackend final : public Backend {
                                contact_incidence_.offsets.data(),
                                contact_incidence_.entries.data(),
                                contact_touching_.data(),
-                               contact_load_.data()};
+                               contact_load_.data(),
+                               plateBending() ? plate_fz_.data() : nullptr};
 #pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_) reduction(|| : blown, moved_far)
     for (int k = 0; k < n; ++k) {
       const CellStepResult r =
@@ -371,7 +425,11 @@ class CpuBackend final : public Backend {
   std::vector<CellMotion> motion_, reference_;
   std::vector<Vec2> world_;               ///< (cells x kV) world vertices [m]
   std::vector<Vec2> turn_;                ///< (cells) (cos yaw, sin yaw)
-  std::vector<Vec2> height_gradient_;     ///< (cells) g of sheet_curvature.hpp; empty without the criterion
+  std::vector<Vec2> height_gradient_;     ///< (cells) g of sheet_curvature.hpp; empty without the criterion or the plate
+  std::vector<SymmetricMatrix2> plate_inverse_;  ///< (cells) P_k of sheet_plate.hpp [1/m^2]; plate bending only
+  std::vector<Vec2> plate_bond_moment_;   ///< (bonds) q_b [N m]; plate bending only
+  std::vector<Vec2> plate_moment_;        ///< (cells) nu_k [N/m]; plate bending only
+  std::vector<double> plate_fz_;          ///< (cells) plate force [N]; plate bending only
   std::vector<int> just_broken_;          ///< bonds broken in the current step
   std::vector<double> box_;               ///< (cells x 4) x0 x1 y0 y1 [m]
   std::vector<StructureContact> structure_;

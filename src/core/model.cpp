@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "thin_ice_sim/physics/sheet_plate.hpp"
 #include "thin_ice_sim/scenario.hpp"
 
 namespace thin_ice {
@@ -50,6 +51,7 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
             verticalStressReading(ice.vertical_stress),
             floatingPlateMomentArm(ice.youngs_modulus, ice.poisson_ratio, h, p.water.density, p.water.gravity),
             ice.curvature_failure ? plateStressPerCurvature(ice.youngs_modulus, ice.poisson_ratio, h) : 0.0};
+  c.plate_bond_stiffness = ice.plate_bending ? plateBondStiffness(ice.youngs_modulus, ice.poisson_ratio, h) : 0.0;
   c.water = {p.water.density,       p.water.gravity,        h, p.water.linear_drag,
              p.water.quadratic_drag, p.water.vertical_linear_drag, p.water.vertical_quadratic_drag};
   // The structure's friction is integrated at the sub-step dt/n (cell_forces.hpp).

@@ -10,8 +10,8 @@
 //   Integers: structure.panels, sheet.lloyd_iterations, numerics.max_steps_between_rebuilds,
 //             numerics.structure_substeps,
 //             numerics.threads (signed), sheet.seed (unsigned 64 bit); decimal digits only.
-//   Booleans: ice.curvature_failure, bottom.enabled, channel.enabled (true/false; yaml-cpp also
-//             takes yes/no, on/off).
+//   Booleans: ice.curvature_failure, ice.plate_bending, bottom.enabled, channel.enabled (true/false;
+//             yaml-cpp also takes yes/no, on/off).
 //
 // Required keys (what makes one experiment differ from another; no silent default for them):
 //   ice.thickness ice.density ice.flexural_strength ice.compressive_strength
@@ -195,6 +195,7 @@ const std::vector<Section>& sections() {
         field(&P::ice, &IceParams::vertical_stress, "vertical_stress", "shear, bending or plate",
               toVerticalStress, kRequired),
         flag(&P::ice, &IceParams::curvature_failure, "curvature_failure"),
+        flag(&P::ice, &IceParams::plate_bending, "plate_bending"),
         number(&P::ice, &IceParams::friction_ice_ice, "friction_ice_ice"),
         field(&P::ice, &IceParams::vertical_slip_friction, "vertical_slip_friction", "level_only or edge_face",
               toVerticalSlipFriction, false),

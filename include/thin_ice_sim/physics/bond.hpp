@@ -98,10 +98,12 @@ struct BondForce {
 /// Any state other than kBondIntact counts as broken for contacts and for output.
 enum BondState : unsigned char { kBondIntact = 0, kBondBreaking = 1, kBondBroken = 2 };
 
-/// Height gradient g_k [-] of cell k (sheet_curvature.hpp) from the cells joined to it by intact
-/// bonds; offsets and entries are the bonds' incidence lists (incidence.hpp), taken in their order.
-TIS_HD Vec2 cellHeightGradient(int k, const int* offsets, const int* entries, const unsigned char* state,
-                               const int* bond_i, const int* bond_j, const CellMotion* motion) {
+/// The least-squares sums of cell k's height gradient (sheet_curvature.hpp) over the cells joined
+/// to it by intact bonds; offsets and entries are the bonds' incidence lists (incidence.hpp), taken
+/// in their order.
+TIS_HD HeightGradientSums cellHeightGradientSums(int k, const int* offsets, const int* entries,
+                                                 const unsigned char* state, const int* bond_i, const int* bond_j,
+                                                 const CellMotion* motion) {
   HeightGradientSums sums = {0.0, 0.0, 0.0, 0.0, 0.0};
   const CellMotion& self = motion[k];
   for (int e = offsets[k]; e < offsets[k + 1]; ++e) {
@@ -110,7 +112,20 @@ TIS_HD Vec2 cellHeightGradient(int k, const int* offsets, const int* entries, co
     const CellMotion& other = motion[(entries[e] & 1) ? bond_i[b] : bond_j[b]];
     addHeightSample(sums, Vec2{other.x - self.x, other.y - self.y}, other.z - self.z);
   }
-  return heightGradient(sums);
+  return sums;
+}
+
+/// Height gradient g_k [-] of cell k (sheet_curvature.hpp).
+TIS_HD Vec2 cellHeightGradient(int k, const int* offsets, const int* entries, const unsigned char* state,
+                               const int* bond_i, const int* bond_j, const CellMotion* motion) {
+  return heightGradient(cellHeightGradientSums(k, offsets, entries, state, bond_i, bond_j, motion));
+}
+
+/// The rest normal n of Eq. (9) turned by the pair's mean yaw: the bisector of its two turned
+/// copies (exact for |yaw_i - yaw_j| < pi, and one square root instead of a sine and a cosine).
+TIS_HD Vec2 turnedBondNormal(Vec2 rest_normal, Vec2 turn_i, Vec2 turn_j) {
+  const Vec2 sum = rotate(rest_normal, turn_i.x, turn_i.y) + rotate(rest_normal, turn_j.x, turn_j.y);
+  return (1.0 / norm(sum)) * sum;
 }
 
 /// The load of a bond force on its two cells: the moments act through the anchors.
@@ -149,10 +164,7 @@ TIS_HD BondForce rmibBondForce(const BondRest& b, const BodyState& i, Vec2 turn_
   BondForce f;
   f.arm_i = rotate(b.anchor_i, turn_i.x, turn_i.y);
   f.arm_j = rotate(b.anchor_j, turn_j.x, turn_j.y);
-  // The rest normal turned by the mean yaw: the bisector of its two turned copies (exact for
-  // |yaw_i - yaw_j| < pi, and one square root instead of a sine and a cosine).
-  const Vec2 sum = rotate(b.normal, turn_i.x, turn_i.y) + rotate(b.normal, turn_j.x, turn_j.y);
-  const Vec2 n = (1.0 / norm(sum)) * sum;
+  const Vec2 n = turnedBondNormal(b.normal, turn_i, turn_j);
 
   const Vec2 du = (j.centroid + f.arm_j) - (i.centroid + f.arm_i);            // Eq. (8)
   const double dz = j.z - i.z;

@@ -57,6 +57,26 @@ TIS_HD Vec2 heightGradient(const HeightGradientSums& s) {
   return {0.0, 0.0};
 }
 
+/// A symmetric 2 x 2 matrix [1/m^2 here]: (xx xy; xy yy).
+struct SymmetricMatrix2 {
+  double xx, xy, yy;
+};
+
+TIS_HD Vec2 operator*(const SymmetricMatrix2& a, Vec2 v) { return {a.xx * v.x + a.xy * v.y, a.xy * v.x + a.yy * v.y}; }
+
+/// The matrix P [1/m^2] of the fit above, g = P sum r dz, in each of its three cases:
+/// (sum r r^T)^-1; 1/trace times the identity on a line (P r_k = t_k u / sum t^2 for samples
+/// along u, which is what heightGradient gives there); 0 without samples. The plate term
+/// (sheet_plate.hpp) needs it for dg/dz; heightGradient keeps its own quotients, so the curvature
+/// criterion's results do not depend on it.
+TIS_HD SymmetricMatrix2 heightGradientInverse(const HeightGradientSums& s) {
+  const double trace = s.xx + s.yy;
+  const double det = s.xx * s.yy - s.xy * s.xy;
+  if (det > 1e-9 * trace * trace) return {s.yy / det, -s.xy / det, s.xx / det};
+  if (trace > 0.0) return {1.0 / trace, 0.0, 1.0 / trace};
+  return {0.0, 0.0, 0.0};
+}
+
 /// kappa_ij [1/m] across a bond of unit normal n (i to j) and length d [m] from the gradients of
 /// its two cells.
 TIS_HD double curvatureAcrossBond(Vec2 gradient_i, Vec2 gradient_j, Vec2 n, double distance) {
