@@ -94,12 +94,13 @@ __global__ void heightGradients(int n, const RunScalars* run, const int* offsets
 // heightGradients, before bondForces: the bonds intact at the start of the step count.
 __global__ void plateGradients(int n, const RunScalars* run, const int* offsets, const int* entries,
                                const unsigned char* state, const int* bond_i, const int* bond_j,
-                               const CellMotion* motion, Vec2* gradient, SymmetricMatrix2* inverse) {
+                               const BondRest* rest, const Vec2* turn, const CellMotion* motion, Vec2* gradient,
+                               SymmetricMatrix2* inverse) {
   const int k = blockIdx.x * blockDim.x + threadIdx.x;
   if (k >= n || run->stop) return;
-  const HeightGradientSums sums = cellHeightGradientSums(k, offsets, entries, state, bond_i, bond_j, motion);
-  gradient[k] = heightGradient(sums);
-  inverse[k] = heightGradientInverse(sums);
+  const PlateFit fit = cellPlateFit(k, offsets, entries, state, bond_i, bond_j, rest, turn, motion);
+  gradient[k] = fit.gradient;
+  inverse[k] = fit.inverse;
 }
 
 __global__ void plateBondMoments(int bonds, const RunScalars* run, double stiffness, const int* bond_i,
@@ -122,11 +123,11 @@ __global__ void plateMoments(int n, const RunScalars* run, const int* offsets, c
 }
 
 __global__ void plateForces(int n, const RunScalars* run, const int* offsets, const int* entries,
-                            const unsigned char* state, const int* bond_i, const int* bond_j,
-                            const CellMotion* motion, const Vec2* moment, double* plate_fz) {
+                            const unsigned char* state, const int* bond_i, const int* bond_j, const BondRest* rest,
+                            const Vec2* turn, const Vec2* moment, double* plate_fz) {
   const int k = blockIdx.x * blockDim.x + threadIdx.x;
   if (k >= n || run->stop) return;
-  plate_fz[k] = cellPlateForce(k, offsets, entries, state, bond_i, bond_j, motion, moment);
+  plate_fz[k] = cellPlateForce(k, offsets, entries, state, bond_i, bond_j, rest, turn, moment);
 }
 
 __global__ void bondForces(int bonds, RunScalars* run, ModelConstants c, const int* bond_i, const int* bond_j,
@@ -406,7 +407,8 @@ class CudaBackend final : public Backend {
         gradient = height_gradient_.get();
         plateGradients<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, bond_offsets_.get(), bond_entries_.get(),
                                                                  bond_state_.get(), bond_i_.get(), bond_j_.get(),
-                                                                 motion_.get(), gradient, plate_inverse_.get());
+                                                                 bond_rest_.get(), turn_.get(), motion_.get(), gradient,
+                                                                 plate_inverse_.get());
         plateBondMoments<<<blocksFor(bonds_), kThreads, 0, stream_>>>(
             bonds_, run, c.plate_bond_stiffness, bond_i_.get(), bond_j_.get(), bond_rest_.get(), turn_.get(), gradient,
             bond_state_.get(), plate_bond_moment_.get());
@@ -415,7 +417,8 @@ class CudaBackend final : public Backend {
                                                                plate_inverse_.get(), plate_moment_.get());
         plateForces<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, bond_offsets_.get(), bond_entries_.get(),
                                                               bond_state_.get(), bond_i_.get(), bond_j_.get(),
-                                                              motion_.get(), plate_moment_.get(), plate_fz_.get());
+                                                              bond_rest_.get(), turn_.get(), plate_moment_.get(),
+                                                              plate_fz_.get());
       } else if (curvatureCriterion()) {
         gradient = height_gradient_.get();
         heightGradients<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, bond_offsets_.get(), bond_entries_.get(),

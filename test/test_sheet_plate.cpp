@@ -29,6 +29,25 @@ TEST(SheetPlate, BondStiffnessIsEightThirdsOfThePlatesFlexuralRigidity) {
   EXPECT_NEAR(plateBondStiffness(328e6, 0.3, 0.051), 10625.04, 0.01);
 }
 
+TEST(SheetPlate, ACellWithTwoBondsTenDegreesApartIsFittedAlongALine) {
+  // Neighbours at 0.2 m, 10 degrees apart: sum r r^T has trace 0.08 m^2 and det / trace^2 =
+  // sin^2(10 deg) / 4 = 0.0075, below the plate's 0.05, so P = I / trace = 12.5 1/m^2; the
+  // criterion's fit (1e-9) still solves the 2 x 2 system and gets the plane through the three.
+  HeightGradientSums sums = {0.0, 0.0, 0.0, 0.0, 0.0};
+  const double angle = 10.0 * M_PI / 180.0;
+  addHeightSample(sums, {0.2, 0.0}, 0.002);
+  addHeightSample(sums, {0.2 * std::cos(angle), 0.2 * std::sin(angle)}, 0.004);
+  const PlateFit fit = plateFit(sums);
+  EXPECT_NEAR(fit.inverse.xx, 12.5, 1e-12);
+  EXPECT_NEAR(fit.inverse.yy, 12.5, 1e-12);
+  EXPECT_EQ(fit.inverse.xy, 0.0);
+  EXPECT_NEAR(fit.gradient.x, 12.5 * (0.2 * 0.002 + 0.2 * std::cos(angle) * 0.004), 1e-15);
+  EXPECT_NEAR(fit.gradient.y, 12.5 * 0.2 * std::sin(angle) * 0.004, 1e-15);
+  const Vec2 plane = heightGradient(sums);
+  EXPECT_NEAR(plane.x, 0.01, 1e-12);  // z = 0.01 x + g_y y through both samples
+  EXPECT_NEAR(plane.y, (0.004 - 0.01 * 0.2 * std::cos(angle)) / (0.2 * std::sin(angle)), 1e-12);
+}
+
 /// Cells, bonds and the pieces the passes read, built by hand or from a generated sheet.
 struct Patch {
   std::vector<CellMotion> motion;
@@ -39,19 +58,29 @@ struct Patch {
 
   Vec2 turn(int k) const { return {std::cos(motion[k].yaw), std::sin(motion[k].yaw)}; }
 
+  std::vector<Vec2> turns() const {
+    std::vector<Vec2> t(motion.size());
+    for (size_t k = 0; k < motion.size(); ++k) t[k] = turn(static_cast<int>(k));
+    return t;
+  }
+
+  PlateFit fitOf(int k) const {
+    const std::vector<Vec2> t = turns();
+    return cellPlateFit(k, incidence.offsets.data(), incidence.entries.data(), state.data(), bond_i.data(),
+                        bond_j.data(), rest.data(), t.data(), motion.data());
+  }
+
   std::vector<Vec2> gradients() const {
     std::vector<Vec2> g(motion.size());
     for (size_t k = 0; k < motion.size(); ++k) {
-      g[k] = cellHeightGradient(static_cast<int>(k), incidence.offsets.data(), incidence.entries.data(), state.data(),
-                                bond_i.data(), bond_j.data(), motion.data());
+      g[k] = fitOf(static_cast<int>(k)).gradient;
     }
     return g;
   }
 
   double bondEnergy(int b, double stiffness, const std::vector<Vec2>& g) const {
     const int i = bond_i[b], j = bond_j[b];
-    return plateBondEnergy(stiffness, g[i], g[j], turnedBondNormal(rest[b].normal, turn(i), turn(j)),
-                           rest[b].distance, rest[b].edge_length);
+    return plateBondEnergy(stiffness, rest[b], turn(i), turn(j), g[i], g[j]);
   }
 
   double energy(double stiffness) const {
@@ -70,11 +99,12 @@ struct Patch {
     const int* entries = incidence.entries.data();
     std::vector<Vec2> g(n), moment(n), bond_moment(rest.size(), Vec2{0.0, 0.0});
     std::vector<SymmetricMatrix2> inverse(n);
+    const std::vector<Vec2> t = turns();
     for (int k = 0; k < n; ++k) {
-      const HeightGradientSums sums =
-          cellHeightGradientSums(k, offsets, entries, state.data(), bond_i.data(), bond_j.data(), motion.data());
-      g[k] = heightGradient(sums);
-      inverse[k] = heightGradientInverse(sums);
+      const PlateFit fit =
+          cellPlateFit(k, offsets, entries, state.data(), bond_i.data(), bond_j.data(), rest.data(), t.data(), motion.data());
+      g[k] = fit.gradient;
+      inverse[k] = fit.inverse;
     }
     for (size_t b = 0; b < rest.size(); ++b) {
       if (state[b] != kBondIntact) continue;
@@ -83,7 +113,8 @@ struct Patch {
     for (int k = 0; k < n; ++k) moment[k] = cellPlateMoment(k, offsets, entries, state.data(), bond_moment.data(), inverse[k]);
     std::vector<double> f(n);
     for (int k = 0; k < n; ++k) {
-      f[k] = cellPlateForce(k, offsets, entries, state.data(), bond_i.data(), bond_j.data(), motion.data(), moment.data());
+      f[k] = cellPlateForce(k, offsets, entries, state.data(), bond_i.data(), bond_j.data(), rest.data(), t.data(),
+                            moment.data());
     }
     return f;
   }
@@ -131,6 +162,35 @@ Patch hexagonalLattice(int columns, int rows, double a, std::vector<int>& neighb
     ++neighbour_count[p.bond_j[b]];
   }
   return p;
+}
+
+TEST(SheetPlate, TwoBondedCellsSlidOverEachOtherKeepTheirRestOffset) {
+  // In a rubble pile two cells can still be bonded after one slid onto the other: here their
+  // centroids coincide in plan, 0.02 m apart in height. The plate measures them over the bond's rest
+  // offset, d = 0.2 m along x: one sample on a line, so P = I / d^2 = 25 1/m^2 and g_i =
+  // (0.02 / 0.2, 0); seen from j the offset is -d along x and the step -0.02 m, so g_j is the same,
+  // the pair has no curvature and no force (where the cells' own centroids gave P = 1 / 0 here).
+  Patch p;
+  CellMotion below{}, above{};
+  above.z = 0.02;
+  p.motion = {below, above};
+  BondRest r{};
+  r.normal = {1.0, 0.0};
+  r.distance = 0.2;
+  r.edge_length = 0.1;
+  p.bond_i = {0};
+  p.bond_j = {1};
+  p.rest = {r};
+  p.state = {kBondIntact};
+  p.incidence.build(2, p.bond_i, p.bond_j);
+  for (int k = 0; k < 2; ++k) {
+    const PlateFit fit = p.fitOf(k);
+    EXPECT_NEAR(fit.inverse.xx, 25.0, 1e-12) << "cell " << k;
+    EXPECT_NEAR(fit.inverse.yy, 25.0, 1e-12) << "cell " << k;
+    EXPECT_NEAR(fit.gradient.x, 0.1, 1e-15) << "cell " << k;
+    EXPECT_EQ(fit.gradient.y, 0.0) << "cell " << k;
+  }
+  for (double f : p.forces(plateBondStiffness(328e6, 0.3, 0.051))) EXPECT_NEAR(f, 0.0, 1e-9);
 }
 
 TEST(SheetPlate, HexagonalLatticeInCylindricalBendingHasAPlatesEnergy) {

@@ -275,10 +275,10 @@ class CpuBackend final : public Backend {
     {
 #pragma omp for schedule(static)
       for (int k = 0; k < n; ++k) {
-        const HeightGradientSums sums = cellHeightGradientSums(k, offsets, entries, state, model_.bond_i.data(),
-                                                               model_.bond_j.data(), motion_.data());
-        height_gradient_[k] = heightGradient(sums);
-        plate_inverse_[k] = heightGradientInverse(sums);
+        const PlateFit fit = cellPlateFit(k, offsets, entries, state, model_.bond_i.data(), model_.bond_j.data(),
+                                          model_.bond_rest.data(), turn_.data(), motion_.data());
+        height_gradient_[k] = fit.gradient;
+        plate_inverse_[k] = fit.inverse;
       }
 #pragma omp for schedule(static)
       for (int b = 0; b < bonds; ++b) {
@@ -295,7 +295,7 @@ class CpuBackend final : public Backend {
 #pragma omp for schedule(static)
       for (int k = 0; k < n; ++k) {
         plate_fz_[k] = cellPlateForce(k, offsets, entries, state, model_.bond_i.data(), model_.bond_j.data(),
-                                      motion_.data(), plate_moment_.data());
+                                      model_.bond_rest.data(), turn_.data(), plate_moment_.data());
       }
     }
   }

@@ -42,13 +42,17 @@ TIS_HD void addHeightSample(HeightGradientSums& s, Vec2 r, double dz) {
   s.yz += r.y * dz;
 }
 
+/// det / trace^2 of sum r r^T (at most 1/4) at or below which the curvature criterion's fit is
+/// solved along a line: the samples span no area worth solving on.
+constexpr double kGradientFitConditioning = 1e-9;
+
 /// The least-squares gradient (dz/dx, dz/dy) [-] of the sums; along the line where the samples
-/// all lie on one (the 2 x 2 system is then singular); zero without samples.
-TIS_HD Vec2 heightGradient(const HeightGradientSums& s) {
+/// all lie on one (the 2 x 2 system is then singular, or as good as singular: det <= conditioning
+/// trace^2); zero without samples.
+TIS_HD Vec2 heightGradient(const HeightGradientSums& s, double conditioning = kGradientFitConditioning) {
   const double trace = s.xx + s.yy;
   const double det = s.xx * s.yy - s.xy * s.xy;
-  // Relative to trace^2 (>= 4 det): below 1e-9 the samples span no area worth solving on.
-  if (det > 1e-9 * trace * trace) {
+  if (det > conditioning * trace * trace) {
     return {(s.yy * s.xz - s.xy * s.yz) / det, (s.xx * s.yz - s.xy * s.xz) / det};
   }
   // Collinear samples r_k = t_k u: sum r r^T = (sum t^2) u u^T, trace = sum t^2, so this is
@@ -64,15 +68,15 @@ struct SymmetricMatrix2 {
 
 TIS_HD Vec2 operator*(const SymmetricMatrix2& a, Vec2 v) { return {a.xx * v.x + a.xy * v.y, a.xy * v.x + a.yy * v.y}; }
 
-/// The matrix P [1/m^2] of the fit above, g = P sum r dz, in each of its three cases:
+/// The matrix P [1/m^2] of the fit above (same conditioning), g = P sum r dz, in each of its three cases:
 /// (sum r r^T)^-1; 1/trace times the identity on a line (P r_k = t_k u / sum t^2 for samples
 /// along u, which is what heightGradient gives there); 0 without samples. The plate term
 /// (sheet_plate.hpp) needs it for dg/dz; heightGradient keeps its own quotients, so the curvature
 /// criterion's results do not depend on it.
-TIS_HD SymmetricMatrix2 heightGradientInverse(const HeightGradientSums& s) {
+TIS_HD SymmetricMatrix2 heightGradientInverse(const HeightGradientSums& s, double conditioning) {
   const double trace = s.xx + s.yy;
   const double det = s.xx * s.yy - s.xy * s.xy;
-  if (det > 1e-9 * trace * trace) return {s.yy / det, -s.xy / det, s.xx / det};
+  if (det > conditioning * trace * trace) return {s.yy / det, -s.xy / det, s.xx / det};
   if (trace > 0.0) return {1.0 / trace, 0.0, 1.0 / trace};
   return {0.0, 0.0, 0.0};
 }
