@@ -230,18 +230,30 @@ TEST(SheetPlate, TiltedPlaneCarriesNoEnergyAndNoForce) {
   for (double f : p.forces(stiffness)) EXPECT_NEAR(f, 0.0, 1e-9);
 }
 
-/// The cells and bonds of a generated Voronoi sheet (the quick strip, 1 m), with random heights,
-/// yaws and three bonds broken.
-Patch voronoiPatch() {
-  const Scenario s = loadScenario(kQuick, {"sheet.length=1.0", "structure.toe_x=1.1",
-                                           "bottom.distance_from_structure=0.5"});
-  const Model model = buildModel(s.params, generateIceSheet(s.params.sheet), s.source);
+/// The cells (at their initial state) and intact bonds of a model.
+Patch patchOf(const Model& model) {
   Patch p;
   p.motion = model.initial;
   p.bond_i = model.bond_i;
   p.bond_j = model.bond_j;
   p.rest = model.bond_rest;
   p.state.assign(p.rest.size(), kBondIntact);
+  p.incidence.build(model.cell_count, p.bond_i, p.bond_j);
+  return p;
+}
+
+/// The quick strip, 1 m long, with the given overrides.
+Model stripModel(const std::string& more_override) {
+  std::vector<std::string> overrides = {"sheet.length=1.0", "structure.toe_x=1.1", "bottom.distance_from_structure=0.5"};
+  if (!more_override.empty()) overrides.push_back(more_override);
+  const Scenario s = loadScenario(kQuick, overrides);
+  return buildModel(s.params, generateIceSheet(s.params.sheet), s.source);
+}
+
+/// The cells and bonds of a generated Voronoi sheet (the quick strip, 1 m), with random heights,
+/// yaws and three bonds broken.
+Patch voronoiPatch() {
+  Patch p = patchOf(stripModel(""));
   std::mt19937 random(11);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
   for (CellMotion& m : p.motion) {
@@ -249,7 +261,6 @@ Patch voronoiPatch() {
     m.yaw += 0.01 * unit(random);
   }
   for (size_t b = 0; b < p.rest.size(); b += p.rest.size() / 3) p.state[b] = kBondBroken;
-  p.incidence.build(static_cast<int>(p.motion.size()), p.bond_i, p.bond_j);
   return p;
 }
 
@@ -282,9 +293,7 @@ TEST(SheetPlate, ForcesAreMinusTheEnergysGradientOnAVoronoiSheet) {
 TEST(SheetPlate, TheCpuBackendAddsThePlatesForceToEachCell) {
   // One step of the strip bent as z = kappa x^2 / 2 plus noise, with and without the term: the
   // cells' vertical velocities differ by F dt / m, F from the law on the initial state.
-  const Scenario s = loadScenario(kQuick, {"sheet.length=1.0", "structure.toe_x=1.1",
-                                           "bottom.distance_from_structure=0.5", "ice.plate_bending=true"});
-  Model on = buildModel(s.params, generateIceSheet(s.params.sheet), s.source);
+  Model on = stripModel("ice.plate_bending=true");
   ASSERT_GT(on.constants.plate_bond_stiffness, 0.0);
   std::mt19937 random(5);
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
@@ -293,14 +302,7 @@ TEST(SheetPlate, TheCpuBackendAddsThePlatesForceToEachCell) {
   Model off = on;
   off.constants.plate_bond_stiffness = 0.0;
 
-  Patch p;
-  p.motion = on.initial;
-  p.bond_i = on.bond_i;
-  p.bond_j = on.bond_j;
-  p.rest = on.bond_rest;
-  p.state.assign(p.rest.size(), kBondIntact);
-  p.incidence.build(on.cell_count, p.bond_i, p.bond_j);
-  const std::vector<double> f = p.forces(on.constants.plate_bond_stiffness);
+  const std::vector<double> f = patchOf(on).forces(on.constants.plate_bond_stiffness);
 
   std::unique_ptr<Backend> with = makeCpuBackend(on, 1), without = makeCpuBackend(off, 1);
   with->step(1, on.initial_pusher_velocity);

@@ -189,18 +189,25 @@ TEST(Simulation, TheVerticalSlipFrictionReadingReachesTheContactLaw) {
   EXPECT_EQ(edge.constants.contact.vertical_slip_friction, kVerticalSlipEdgeFace);
 }
 
+/// Broken bonds of the short strip at `until` [s] on `backend`, with the two options beyond the paper
+/// as given (the run must stay healthy).
+int brokenBondsOfTheShortStrip(BackendKind backend, bool curvature_failure, bool plate_bending, double until) {
+  Scenario strip = shortStrip(0);
+  strip.params.ice.curvature_failure = curvature_failure;
+  strip.params.ice.plate_bending = plate_bending;
+  Simulation sim(strip, backend);
+  while (sim.time() < until - 1e-9 && sim.healthy()) sim.advance(0.01);
+  EXPECT_TRUE(sim.healthy()) << sim.lastError();
+  return sim.loads().broken_bonds;
+}
+
 TEST_P(EveryBackend, TheCurvatureCriterionSparesTheFloatingSheetAndBreaksTheBentOne) {
   // ice.curvature_failure (physics/sheet_curvature.hpp) on the short strip: while it floats
   // towards the face (first contact ~0.27 s) no bond breaks, with or without it; once the sheet
   // bends against the face it breaks bonds Eq. (13) alone leaves whole (by 0.45 s, 40 against 21
   // on the CPU).
   auto brokenAt = [&](bool curvature, double until) {
-    Scenario strip = shortStrip(0);
-    strip.params.ice.curvature_failure = curvature;
-    Simulation sim(strip, GetParam());
-    while (sim.time() < until - 1e-9 && sim.healthy()) sim.advance(0.01);
-    EXPECT_TRUE(sim.healthy()) << sim.lastError();
-    return sim.loads().broken_bonds;
+    return brokenBondsOfTheShortStrip(GetParam(), curvature, false, until);
   };
   EXPECT_EQ(brokenAt(true, 0.25), 0);
   const int with = brokenAt(true, 0.45), without = brokenAt(false, 0.45);
@@ -212,15 +219,7 @@ TEST_P(EveryBackend, PlateBendingSpreadsTheBendThatTheCurvatureCriterionBreaks) 
   // it stays stable and whole while it floats, and against the face the plate's stiffness spreads
   // the bend over more cells, so fewer bonds reach the breaking curvature than without it (by
   // 0.45 s, 26 against 40 on the CPU).
-  auto brokenAt = [&](bool plate, double until) {
-    Scenario strip = shortStrip(0);
-    strip.params.ice.curvature_failure = true;
-    strip.params.ice.plate_bending = plate;
-    Simulation sim(strip, GetParam());
-    while (sim.time() < until - 1e-9 && sim.healthy()) sim.advance(0.01);
-    EXPECT_TRUE(sim.healthy()) << sim.lastError();
-    return sim.loads().broken_bonds;
-  };
+  auto brokenAt = [&](bool plate, double until) { return brokenBondsOfTheShortStrip(GetParam(), true, plate, until); };
   EXPECT_EQ(brokenAt(true, 0.25), 0);
   const int with = brokenAt(true, 0.45), without = brokenAt(false, 0.45);
   EXPECT_GT(with, 0);
