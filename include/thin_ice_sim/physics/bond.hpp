@@ -98,12 +98,10 @@ struct BondForce {
 /// Any state other than kBondIntact counts as broken for contacts and for output.
 enum BondState : unsigned char { kBondIntact = 0, kBondBreaking = 1, kBondBroken = 2 };
 
-/// The least-squares sums of cell k's height gradient (sheet_curvature.hpp) over the cells joined
-/// to it by intact bonds; offsets and entries are the bonds' incidence lists (incidence.hpp), taken
-/// in their order.
-TIS_HD HeightGradientSums cellHeightGradientSums(int k, const int* offsets, const int* entries,
-                                                 const unsigned char* state, const int* bond_i, const int* bond_j,
-                                                 const CellMotion* motion) {
+/// Height gradient g_k [-] of cell k (sheet_curvature.hpp) from the cells joined to it by intact
+/// bonds; offsets and entries are the bonds' incidence lists (incidence.hpp), taken in their order.
+TIS_HD Vec2 cellHeightGradient(int k, const int* offsets, const int* entries, const unsigned char* state,
+                               const int* bond_i, const int* bond_j, const CellMotion* motion) {
   HeightGradientSums sums = {0.0, 0.0, 0.0, 0.0, 0.0};
   const CellMotion& self = motion[k];
   for (int e = offsets[k]; e < offsets[k + 1]; ++e) {
@@ -112,13 +110,7 @@ TIS_HD HeightGradientSums cellHeightGradientSums(int k, const int* offsets, cons
     const CellMotion& other = motion[(entries[e] & 1) ? bond_i[b] : bond_j[b]];
     addHeightSample(sums, Vec2{other.x - self.x, other.y - self.y}, other.z - self.z);
   }
-  return sums;
-}
-
-/// Height gradient g_k [-] of cell k (sheet_curvature.hpp).
-TIS_HD Vec2 cellHeightGradient(int k, const int* offsets, const int* entries, const unsigned char* state,
-                               const int* bond_i, const int* bond_j, const CellMotion* motion) {
-  return heightGradient(cellHeightGradientSums(k, offsets, entries, state, bond_i, bond_j, motion));
+  return heightGradient(sums);
 }
 
 /// The rest normal n of Eq. (9) turned by the pair's mean yaw: the bisector of its two turned

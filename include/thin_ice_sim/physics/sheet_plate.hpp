@@ -11,7 +11,7 @@
 // The plate is Lagrangian: its geometry is the sheet's at rest, turned with the cells. Each intact
 // bond b = (i, j) gives the offset o_b = d_b n_b from i's centroid to j's (d_b the rest length,
 // n_b the turned normal of Eq. 9), so two cells that have slid over each other in a pile still sit
-// d_b apart for the plate (with the cells' current centroids such a pair gave a fit of 1e5 1/m^2
+// d_b apart for the plate (with the cells' current centroids such a pair gave a fit of 3e5 1/m^2
 // and a force of 2.7e7 N in the first step of a resumed run).
 //   g_k     = P_k sum_j r_kj (z_j - z_k) over k's intact bonds, r_kj = +o_b where k is i, -o_b where
 //             k is j; P_k = (sum r r^T)^-1, or 1/trace on a line (heightGradientInverse) [-]
@@ -29,8 +29,8 @@
 //   mu_k = dU/dg_k = sum over k's intact bonds of +-q_b (+ where k is j),  q_b = D' L_b kappa_b n_b / 2
 //   nu_k = P_k mu_k                                                        [N/m]
 //   F_m  = sum over m's intact bonds to k of (nu_k + nu_m) . r_mk           [N]
-// The forces of every pair of cells cancel, so the sheet's total vertical force is 0, and a plane
-// (tilted or not) has kappa = 0 and no force.
+// The forces of every pair of cells cancel, so the sheet's total vertical force is 0, and heights
+// on a plane over the offsets (tilted or not) have kappa = 0 and no force.
 #pragma once
 
 #include <math.h>
@@ -62,6 +62,20 @@ TIS_HD Vec2 plateBondOffset(const BondRest& b, Vec2 turn_i, Vec2 turn_j) {
   return b.distance * turnedBondNormal(b.normal, turn_i, turn_j);
 }
 
+/// A bonded neighbour of a cell, as the plate sees it.
+struct PlateNeighbour {
+  int cell;
+  Vec2 offset;  ///< [m] r from the cell to the neighbour: +o_b where the cell is the bond's i, -o_b where j
+};
+
+/// The neighbour across incidence entry `entry` (2 x bond + 1 where the cell is the bond's j).
+TIS_HD PlateNeighbour plateNeighbour(int entry, const int* bond_i, const int* bond_j, const BondRest* rest,
+                                     const Vec2* turn) {
+  const int b = entry >> 1, i = bond_i[b], j = bond_j[b];
+  const Vec2 offset = plateBondOffset(rest[b], turn[i], turn[j]);
+  return (entry & 1) ? PlateNeighbour{i, -offset} : PlateNeighbour{j, offset};
+}
+
 /// A cell's height gradient g and its P, fitted over the plate's offsets.
 struct PlateFit {
   Vec2 gradient;             ///< [-]
@@ -80,10 +94,8 @@ TIS_HD PlateFit cellPlateFit(int k, const int* offsets, const int* entries, cons
   for (int e = offsets[k]; e < offsets[k + 1]; ++e) {
     const int b = entries[e] >> 1;
     if (state[b] != kBondIntact) continue;
-    const bool is_j = (entries[e] & 1) != 0;
-    const int i = bond_i[b], j = bond_j[b];
-    const Vec2 offset = plateBondOffset(rest[b], turn[i], turn[j]);  // from i to j
-    addHeightSample(sums, is_j ? -offset : offset, motion[is_j ? i : j].z - motion[k].z);
+    const PlateNeighbour other = plateNeighbour(entries[e], bond_i, bond_j, rest, turn);
+    addHeightSample(sums, other.offset, motion[other.cell].z - motion[k].z);
   }
   return plateFit(sums);
 }
@@ -125,10 +137,8 @@ TIS_HD double cellPlateForce(int m, const int* offsets, const int* entries, cons
   for (int e = offsets[m]; e < offsets[m + 1]; ++e) {
     const int b = entries[e] >> 1;
     if (state[b] != kBondIntact) continue;
-    const bool is_j = (entries[e] & 1) != 0;
-    const int i = bond_i[b], j = bond_j[b];
-    const Vec2 offset = plateBondOffset(rest[b], turn[i], turn[j]);  // from i to j
-    force += dot(moment[is_j ? i : j] + moment[m], is_j ? -offset : offset);
+    const PlateNeighbour other = plateNeighbour(entries[e], bond_i, bond_j, rest, turn);
+    force += dot(moment[other.cell] + moment[m], other.offset);
   }
   return force;
 }
