@@ -16,7 +16,9 @@
 // rebuild is due, or a cell blew up) does nothing, so the host, which looks at the flags after
 // each batch, rebuilds before the next step exactly as the CPU backend does.
 //
-// The contact rebuild stays on the device (contact_list.cuh): only the pair count comes back.
+// The contact rebuild stays on the device (contact_list.cuh): only the pair count comes back;
+// with ice.curvature_failure_scope: sheet the bond states also come back at each rebuild, and the
+// host marks the intact sheet's cells (largestPieceCells, the CPU backend's function).
 //
 // Precision: the state is double, as on the CPU; the polygon intersection works on an integer
 // grid laid over each pair (polygon_clip.hpp), so it is exact and order-independent on both.
@@ -132,18 +134,20 @@ __global__ void plateForces(int n, const RunScalars* run, const int* offsets, co
 
 __global__ void bondForces(int bonds, RunScalars* run, ModelConstants c, const int* bond_i, const int* bond_j,
                            const BondRest* rest, const CellMotion* motion, const double* mass, const double* inertia,
-                           const Vec2* turn, const Vec2* gradient, unsigned char* state, PairLoad* load) {
+                           const Vec2* turn, const Vec2* gradient, const unsigned char* sheet, unsigned char* state,
+                           PairLoad* load) {
   const int b = blockIdx.x * blockDim.x + threadIdx.x;
   if (b >= bonds || run->stop) return;
   const unsigned char was = state[b];
   if (was == kBondBreaking) state[b] = kBondBroken;  // it applied its last force in the last step
   if (was != kBondIntact) return;
   const int i = bond_i[b], j = bond_j[b];
-  const bool curvature = c.bond.curvature_stress_modulus != 0.0;  // else gradient may be null
+  // Else gradient may be null; a bond the criterion does not check gets no curvature (kappa = 0).
+  const bool checked = c.bond.curvature_stress_modulus != 0.0 && curvatureChecked(sheet, i, j);
   const Vec2 none = {0.0, 0.0};
   const BondForce f = rmibBondForce(rest[b], bodyOf(motion[i], mass[i], inertia[i]), turn[i],
                                     bodyOf(motion[j], mass[j], inertia[j]), turn[j], c.bond,
-                                    curvature ? gradient[i] : none, curvature ? gradient[j] : none);
+                                    checked ? gradient[i] : none, checked ? gradient[j] : none);
   load[b] = bondLoad(f);
   if (f.breaks) {
     state[b] = kBondBreaking;  // for good; its force of this step still acts
@@ -254,6 +258,10 @@ class CudaBackend final : public Backend {
     bond_load_.resize(bonds_);
     bond_state_.resize(bonds_);
     if (curvatureCriterion() || plateBending()) height_gradient_.resize(n_);
+    if (model.constants.curvature_sheet_only) {
+      sheet_cells_.resize(n_);
+      sheet_state_host_.resize(bonds_);
+    }
     if (plateBending()) {
       plate_inverse_.resize(n_);
       plate_bond_moment_.resize(bonds_);
@@ -428,6 +436,7 @@ class CudaBackend final : public Backend {
       bondForces<<<blocksFor(bonds_), kThreads, 0, stream_>>>(bonds_, run, c, bond_i_.get(), bond_j_.get(),
                                                                bond_rest_.get(), motion_.get(), mass_.get(),
                                                                inertia_.get(), turn_.get(), gradient,
+                                                               c.curvature_sheet_only ? sheet_cells_.get() : nullptr,
                                                                bond_state_.get(), bond_load_.get());
     }
     const int capacity = contacts_.capacity();
@@ -475,6 +484,7 @@ class CudaBackend final : public Backend {
 
   void rebuildContacts() {
     const ModelConstants& c = model_.constants;
+    if (c.curvature_sheet_only) refreshSheetCells();
     const CandidateInputs in = {n_,          motion_.get(),       radius_.get(),      c.search_radius,
                                 c.search_margin, bond_offsets_.get(), bond_entries_.get(), bond_i_.get(),
                                 bond_j_.get(), bond_state_.get()};
@@ -488,6 +498,16 @@ class CudaBackend final : public Backend {
     startAfterRebuild<<<1, 1, 0, stream_>>>(run_.get(), contacts_.count());
     TIS_CUDA_CHECK(cudaGetLastError());
     rebuild_requested_ = false;
+  }
+
+  /// With ice.curvature_failure_scope: sheet, the cells of the intact sheet, found on the host by
+  /// the CPU backend's function (largestPieceCells) from the bond states, which the stream, idle
+  /// at a rebuild, holds as of the last step; the copy back is ordered before the next step.
+  void refreshSheetCells() {
+    TIS_CUDA_CHECK(cudaMemcpyAsync(sheet_state_host_.data(), bond_state_.get(), bonds_, cudaMemcpyDeviceToHost, stream_));
+    TIS_CUDA_CHECK(cudaStreamSynchronize(stream_));
+    sheet_cells_host_ = largestPieceCells(n_, model_.bond_i, model_.bond_j, sheet_state_host_);
+    TIS_CUDA_CHECK(cudaMemcpyAsync(sheet_cells_.get(), sheet_cells_host_.data(), n_, cudaMemcpyHostToDevice, stream_));
   }
 
   LoadSample downloadLoads(long taken) const {
@@ -537,6 +557,9 @@ class CudaBackend final : public Backend {
   DeviceArray<PairLoad> bond_load_;  ///< (bonds)
   DeviceArray<Vec2> world_, turn_;
   DeviceArray<Vec2> height_gradient_;  ///< (cells) with the curvature criterion or plate bending only
+  DeviceArray<unsigned char> sheet_cells_;  ///< (cells) 1: in the intact sheet; curvature scope `sheet` only
+  std::vector<unsigned char> sheet_state_host_;  ///< (bonds) the bond states copied back for it
+  std::vector<unsigned char> sheet_cells_host_;  ///< (cells) its result, kept until the copy is done
   DeviceArray<SymmetricMatrix2> plate_inverse_;  ///< (cells) P_k [1/m^2], plate bending only
   DeviceArray<Vec2> plate_bond_moment_, plate_moment_;  ///< (bonds) q_b [N m], (cells) nu_k [N/m]
   DeviceArray<double> plate_fz_;  ///< (cells) plate force [N]

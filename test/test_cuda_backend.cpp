@@ -117,6 +117,16 @@ TEST_F(GpuParity, SheetBentPastItsBreakingCurvatureBreaksAlikeWithTheCurvatureCr
   expectSameStates(model, 50, 1e-9);
 }
 
+TEST_F(GpuParity, SheetBentWithTheCurvatureCriterionOnTheIntactSheetOnlyBreaksAlike) {
+  // ice.curvature_failure_scope: sheet, the strip bent as above: after the first bonds break, the
+  // host marks the largest piece at each rebuild and the bond kernel must check the same bonds.
+  Model model = stripModel({"ice.curvature_failure=true", "ice.curvature_failure_scope=sheet"});
+  ASSERT_TRUE(model.constants.curvature_sheet_only);
+  const double x0 = model.initial.front().x;
+  for (CellMotion& m : model.initial) m.z += 0.05 * std::pow(m.x - x0, 3) / 6.0;
+  expectSameStates(model, 50, 1e-9);
+}
+
 TEST_F(GpuParity, SheetBentWithPlateBendingAndTheCurvatureCriterionAgreesAfter50Steps) {
   // ice.plate_bending and ice.curvature_failure on, the strip bent as in the case above: the four
   // plate kernels must give each cell the CPU's plate force, and the bonds must break alike.

@@ -307,6 +307,37 @@ TEST_F(ScenarioFileTest, CurvatureFailureIsOffUnlessAskedForAndReachesTheBondLaw
   }
 }
 
+TEST_F(ScenarioFileTest, CurvatureFailureScopeIsAllUnlessAskedForAndNeedsTheCriterion) {
+  // The shipped scenarios name it, all; left out it is all too; sheet with the criterion on marks
+  // the model; sheet without it, or another word, is refused with the key, the value and what is allowed.
+  const std::string path = kScenarioDir + "quick.yaml";
+  const Params shipped = loadScenario(path).params;
+  EXPECT_EQ(shipped.ice.curvature_failure_scope, CurvatureFailureScope::kAll);
+  const std::string without = write("no_scope.yaml", withLine(quick_, "ice", "curvature_failure_scope", ""));
+  EXPECT_EQ(loadScenario(without).params.ice.curvature_failure_scope, CurvatureFailureScope::kAll);
+  const Params on = loadScenario(path, {"ice.curvature_failure=true", "ice.curvature_failure_scope=sheet"}).params;
+  EXPECT_EQ(on.ice.curvature_failure_scope, CurvatureFailureScope::kSheet);
+  const IceSheet sheet = generateIceSheet(on.sheet);
+  EXPECT_TRUE(buildModel(on, sheet, "on").constants.curvature_sheet_only);
+  EXPECT_FALSE(buildModel(shipped, sheet, "off").constants.curvature_sheet_only);
+  auto refusal = [&](const std::vector<std::string>& overrides) {
+    try {
+      loadScenario(path, overrides);
+    } catch (const ScenarioError& e) {
+      return std::string(e.what());
+    }
+    return std::string("accepted");
+  };
+  const std::string alone = refusal({"ice.curvature_failure_scope=sheet"});
+  EXPECT_NE(alone.find("ice.curvature_failure_scope = sheet"), std::string::npos) << alone;
+  EXPECT_NE(alone.find("ice.curvature_failure = false"), std::string::npos) << alone;
+  EXPECT_NE(alone.find("'ice.curvature_failure_scope=sheet'"), std::string::npos) << alone;  // the override named
+  const std::string word = refusal({"ice.curvature_failure=true", "ice.curvature_failure_scope=floes"});
+  EXPECT_NE(word.find("ice.curvature_failure_scope"), std::string::npos) << word;
+  EXPECT_NE(word.find("all or sheet"), std::string::npos) << word;
+  EXPECT_NE(word.find("floes"), std::string::npos) << word;
+}
+
 TEST_F(ScenarioFileTest, PlateBendingIsOffUnlessAskedForAndReachesTheModel) {
   // The shipped scenarios name it, false; left out it is false too; true gives the model
   // D' = 8 E h^3 / (36 (1 - nu^2)) (physics/sheet_plate.hpp).

@@ -25,6 +25,14 @@ enum class VerticalSlipFrictionModel {
                ///< (the default since 2026-12-02: docs/validation/calibration.md)
 };
 
+/// Which bonds the curvature criterion (ice.curvature_failure) checks (beyond the paper:
+/// physics/sheet_curvature.hpp, docs/model.md "Curvature failure").
+enum class CurvatureFailureScope {
+  kAll,    ///< every intact bond
+  kSheet,  ///< only bonds between two cells of the intact sheet, the largest piece held together
+           ///< by intact bonds: floes that broke off keep their curvature and fail by Eq. (13) only
+};
+
 struct IceParams {
   double thickness = 0.051;             ///< h [m]
   double density = 920.0;               ///< rho_i [kg/m^3]
@@ -40,6 +48,7 @@ struct IceParams {
   /// Also break a bond when the plate stress of the sheet's curvature across it, E h |kappa| /
   /// (2 (1 - nu^2)), exceeds Eq. (13)'s threshold (beyond the paper: physics/sheet_curvature.hpp).
   bool curvature_failure = false;
+  CurvatureFailureScope curvature_failure_scope = CurvatureFailureScope::kAll;
   /// Give the bonded sheet a Kirchhoff plate's bending stiffness through the cells' heights
   /// (beyond the paper: physics/sheet_plate.hpp).
   bool plate_bending = false;

@@ -11,6 +11,7 @@
 //   rebuild the candidate pairs when a cell moved > 0.1 l-bar, turned > delta_rot, a bond broke,
 //   or N_iter steps passed                                    (Algorithm 1, lines 14-17)
 //                                                             (parallel over ranges of cells and of candidates)
+//   with ice.curvature_failure_scope: sheet, also which cells are in the intact sheet   (serial, at each rebuild)
 // Pair forces are stored per pair and gathered per cell through fixed index lists, so the result
 // is bit-identical for any number of threads.
 #include "cpu_backend.hpp"
@@ -161,6 +162,11 @@ class CpuBackend final : public Backend {
   /// Candidate pairs within the search radius that are not held by an intact bond.
   void rebuildContacts() {
     const int n = model_.cell_count;
+    // The cells the curvature criterion checks with scope `sheet`: a rebuild follows every step in
+    // which a bond broke, so this is at most one step old (sheet_curvature.hpp).
+    if (model_.constants.curvature_sheet_only) {
+      sheet_cells_ = largestPieceCells(n, model_.bond_i, model_.bond_j, bond_state_);
+    }
     std::vector<Vec2> centres(n);
     for (int k = 0; k < n; ++k) centres[k] = {motion_[k].x, motion_[k].y};
     const int ranges = parallel_ ? threads_ : 1;
@@ -306,8 +312,10 @@ class CpuBackend final : public Backend {
     } else if (!height_gradient_.empty()) {
       computeHeightGradients();
     }
-    const int newly_broken = bond_pass_.run(motion_.data(), turn_.data(), height_gradient_.data(), bond_state_.data(),
-                                            bond_load_.data(), threads_, parallel_);
+    const int newly_broken =
+        bond_pass_.run(motion_.data(), turn_.data(), height_gradient_.data(),
+                       sheet_cells_.empty() ? nullptr : sheet_cells_.data(), bond_state_.data(), bond_load_.data(),
+                       threads_, parallel_);
     if (newly_broken > 0) {
       broken_count_ += newly_broken;
       rebuild_requested_ = true;  // the pair now needs a DEM contact
@@ -430,6 +438,7 @@ class CpuBackend final : public Backend {
   std::vector<Vec2> plate_bond_moment_;   ///< (bonds) q_b [N m]; plate bending only
   std::vector<Vec2> plate_moment_;        ///< (cells) nu_k [N/m]; plate bending only
   std::vector<double> plate_fz_;          ///< (cells) plate force [N]; plate bending only
+  std::vector<unsigned char> sheet_cells_;  ///< (cells) 1: in the intact sheet; curvature scope `sheet` only
   std::vector<int> just_broken_;          ///< bonds broken in the current step
   std::vector<double> box_;               ///< (cells x 4) x0 x1 y0 y1 [m]
   std::vector<StructureContact> structure_;

@@ -21,7 +21,8 @@ constexpr double exponentOfCode(int code) { return code == 1 ? 1.0 : (code == 2 
 template <int kExponentCode, int kReading, bool kCurvature>
 long long forceBlock(const Model& model, const BondRestColumns& r, int first, int count,
                      const CellMotion* __restrict motion, const Vec2* __restrict turn,
-                     const Vec2* __restrict gradient, PairLoad* __restrict load, long long* __restrict breaks) {
+                     const Vec2* __restrict gradient, const unsigned char* __restrict sheet,
+                     PairLoad* __restrict load, long long* __restrict breaks) {
   // A local copy, so that the values fixed here are known where the law reads them (they fold).
   BondConstants c = model.constants.bond;
   if (kExponentCode != 0) {
@@ -43,10 +44,12 @@ long long forceBlock(const Model& model, const BondRestColumns& r, int first, in
                            r.k_shear[b],                       r.k_vertical[b],
                            r.damping_normal[b],                r.damping_shear[b],
                            r.damping_vertical[b]};
+    // A bond the criterion does not check gets no curvature: kappa = 0 leaves sigma_v as it is.
     const Vec2 none = {0.0, 0.0};
+    const bool checked = kCurvature && curvatureChecked(sheet, i, j);
     const BondForce f = rmibBondForce(rest, bodyOf(motion[i], mass[i], inertia[i]), turn[i],
                                       bodyOf(motion[j], mass[j], inertia[j]), turn[j], c,
-                                      kCurvature ? gradient[i] : none, kCurvature ? gradient[j] : none);
+                                      checked ? gradient[i] : none, checked ? gradient[j] : none);
     const PairLoad l = bondLoad(f);
     // Field by field: a whole-struct store keeps the compiler from vectorising.
     load[b].force_on_j.x = l.force_on_j.x;
@@ -109,8 +112,8 @@ CpuBondPass::CpuBondPass(const Model& model) : model_(model), kernel_(kernelFor(
   }
 }
 
-int CpuBondPass::run(const CellMotion* motion, const Vec2* turn, const Vec2* gradient, unsigned char* state,
-                     PairLoad* load, int threads, bool parallel) const {
+int CpuBondPass::run(const CellMotion* motion, const Vec2* turn, const Vec2* gradient, const unsigned char* sheet,
+                     unsigned char* state, PairLoad* load, int threads, bool parallel) const {
   const int bonds = static_cast<int>(model_.bond_rest.size());
   const int blocks = (bonds + kBondBlock - 1) / kBondBlock;
   int newly_broken = 0;
@@ -119,7 +122,7 @@ int CpuBondPass::run(const CellMotion* motion, const Vec2* turn, const Vec2* gra
     const int first = block * kBondBlock, count = std::min(kBondBlock, bonds - first);
     if (std::memchr(state + first, kBondIntact, count) == nullptr) continue;  // all broken
     long long breaks[kBondBlock];
-    if (kernel_(model_, rest_, first, count, motion, turn, gradient, load, breaks) == 0) continue;
+    if (kernel_(model_, rest_, first, count, motion, turn, gradient, sheet, load, breaks) == 0) continue;
     for (int t = 0; t < count; ++t) {
       if (breaks[t] != 0 && state[first + t] == kBondIntact) {
         state[first + t] = kBondBreaking;  // for good; its force of this step still acts

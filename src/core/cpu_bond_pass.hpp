@@ -40,9 +40,10 @@ class CpuBondPass {
   /// Computes the load of every intact bond into load[b] and marks the bonds that fail in this
   /// step kBondBreaking in state; returns how many did. motion and turn: (cells) the cells'
   /// state and (cos, sin) of their yaw in this step; gradient: (cells) their height gradients,
-  /// read only when the scenario has the curvature criterion (else may be null).
-  int run(const CellMotion* motion, const Vec2* turn, const Vec2* gradient, unsigned char* state, PairLoad* load,
-          int threads, bool parallel) const;
+  /// read only when the scenario has the curvature criterion (else may be null); sheet: (cells)
+  /// which cells the criterion checks (curvatureChecked, sheet_curvature.hpp), null for all.
+  int run(const CellMotion* motion, const Vec2* turn, const Vec2* gradient, const unsigned char* sheet,
+          unsigned char* state, PairLoad* load, int threads, bool parallel) const;
 
   /// Whether the scenario's constants have a vectorised instance (else the scalar one runs).
   bool vectorised() const { return vectorised_; }
@@ -51,7 +52,7 @@ class CpuBondPass {
   /// returns non-zero when any of them breaks.
   using BlockKernel = long long (*)(const Model& model, const BondRestColumns& rest, int first, int count,
                                     const CellMotion* motion, const Vec2* turn, const Vec2* gradient,
-                                    PairLoad* load, long long* breaks);
+                                    const unsigned char* sheet, PairLoad* load, long long* breaks);
 
  private:
   const Model& model_;

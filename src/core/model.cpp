@@ -52,6 +52,8 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
             floatingPlateMomentArm(ice.youngs_modulus, ice.poisson_ratio, h, p.water.density, p.water.gravity),
             ice.curvature_failure ? plateStressPerCurvature(ice.youngs_modulus, ice.poisson_ratio, h) : 0.0};
   c.plate_bond_stiffness = ice.plate_bending ? plateBondStiffness(ice.youngs_modulus, ice.poisson_ratio, h) : 0.0;
+  c.curvature_sheet_only =
+      ice.curvature_failure && ice.curvature_failure_scope == CurvatureFailureScope::kSheet;
   c.water = {p.water.density,       p.water.gravity,        h, p.water.linear_drag,
              p.water.quadratic_drag, p.water.vertical_linear_drag, p.water.vertical_quadratic_drag};
   // The structure's friction is integrated at the sub-step dt/n (cell_forces.hpp).

@@ -6,7 +6,7 @@
 // (IceParams, IceSheetSpec, WaterParams, BottomParams, StructureParams, PusherParams,
 // ChannelParams, NumericsParams), plus an optional top-level `description:` text.
 //   Enums:    ice.vertical_stress: shear | bending | plate;  sheet.layout: jittered_grid | poisson_disk;
-//             ice.vertical_slip_friction: level_only | edge_face
+//             ice.vertical_slip_friction: level_only | edge_face;  ice.curvature_failure_scope: all | sheet
 //   Integers: structure.panels, sheet.lloyd_iterations, numerics.max_steps_between_rebuilds,
 //             numerics.structure_substeps,
 //             numerics.threads (signed), sheet.seed (unsigned 64 bit); decimal digits only.
@@ -133,6 +133,13 @@ VerticalSlipFrictionModel toVerticalSlipFriction(const YAML::Node& n) {
   throw BadValue(describe(n));
 }
 
+CurvatureFailureScope toCurvatureFailureScope(const YAML::Node& n) {
+  const std::string& s = plainScalar(n);
+  if (s == "all") return CurvatureFailureScope::kAll;
+  if (s == "sheet") return CurvatureFailureScope::kSheet;
+  throw BadValue(describe(n));
+}
+
 SeedLayout toLayout(const YAML::Node& n) {
   try {
     return parseSeedLayout(plainScalar(n), "sheet.layout");
@@ -195,6 +202,8 @@ const std::vector<Section>& sections() {
         field(&P::ice, &IceParams::vertical_stress, "vertical_stress", "shear, bending or plate",
               toVerticalStress, kRequired),
         flag(&P::ice, &IceParams::curvature_failure, "curvature_failure"),
+        field(&P::ice, &IceParams::curvature_failure_scope, "curvature_failure_scope", "all or sheet",
+              toCurvatureFailureScope, false),
         flag(&P::ice, &IceParams::plate_bending, "plate_bending"),
         number(&P::ice, &IceParams::friction_ice_ice, "friction_ice_ice"),
         field(&P::ice, &IceParams::vertical_slip_friction, "vertical_slip_friction", "level_only or edge_face",
@@ -460,6 +469,11 @@ void checkParams(const Params& p) {
   nonNegative("ice.friction_ice_ice", ice.friction_ice_ice, "a friction coefficient", "");
   dampingRatio("ice.contact_damping_ratio", ice.contact_damping_ratio);
   dampingRatio("ice.bond_damping_ratio", ice.bond_damping_ratio);
+  if (ice.curvature_failure_scope == CurvatureFailureScope::kSheet && !ice.curvature_failure) {
+    throw RangeError({"ice.curvature_failure_scope", "ice.curvature_failure"},
+                     "ice.curvature_failure_scope = sheet is invalid: it limits the curvature criterion, which is "
+                     "off (ice.curvature_failure = false); allowed: all, or sheet with ice.curvature_failure: true");
+  }
   positive("water.density", p.water.density, "the water density", " kg/m^3");
   positive("water.gravity", p.water.gravity, "gravity", " m/s^2");
   nonNegative("water.linear_drag", p.water.linear_drag, "drag", " N s/m^3");

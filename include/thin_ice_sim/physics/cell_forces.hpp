@@ -68,6 +68,7 @@ struct ModelConstants {
   double search_radius;            ///< [m] centroid distance under which a pair may be a candidate
   double search_margin;            ///< [m] a pair is a candidate when |c_i - c_j| <= r_i + r_j + this
   double plate_bond_stiffness;     ///< D' [N m] of ice.plate_bending (sheet_plate.hpp); 0: off
+  bool curvature_sheet_only;       ///< ice.curvature_failure_scope: sheet (sheet_curvature.hpp)
 };
 
 /// A cell faster than this has blown up [m/s] (the pusher moves at centimetres per second).

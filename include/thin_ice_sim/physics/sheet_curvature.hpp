@@ -18,6 +18,13 @@
 // A plane gives g_i = g_j and kappa = 0 whatever its slope; a parabola z = kappa x^2 / 2 sampled
 // symmetrically about each cell gives g_i = kappa x_i, hence kappa_ij = kappa exactly. A cell
 // whose intact bonds all lie on one line (one bond, or a row) gets the slope along that line.
+//
+// Scope (ice.curvature_failure_scope): `all` checks every intact bond; `sheet` only the bonds
+// between two cells of the intact sheet, the largest piece held together by intact bonds
+// (largestPieceCells, backend.hpp, refreshed at every contact rebuild, so at the latest one step
+// after a bond broke). A floe that broke off still bends and carries the plate term, but fails by
+// Eq. (13) alone: the test of whether the finer rubble the criterion makes in the pile is what
+// raises the load (docs/validation/calibration.md, 2026-12-03).
 #pragma once
 
 #include <math.h>
@@ -85,6 +92,12 @@ TIS_HD SymmetricMatrix2 heightGradientInverse(const HeightGradientSums& s, doubl
 /// its two cells.
 TIS_HD double curvatureAcrossBond(Vec2 gradient_i, Vec2 gradient_j, Vec2 n, double distance) {
   return dot(gradient_j - gradient_i, n) / distance;
+}
+
+/// Whether the curvature criterion checks the bond between cells i and j: sheet holds one byte per
+/// cell, nonzero for a cell of the intact sheet, or is null when every bond is checked.
+TIS_HD bool curvatureChecked(const unsigned char* sheet, int i, int j) {
+  return sheet == nullptr || (sheet[i] & sheet[j]) != 0;
 }
 
 /// E h / (2 (1 - nu^2)) [Pa m]: the plate stress per unit curvature at the surface.
