@@ -251,7 +251,9 @@ CutStripBreaks breaksOfTheCutBentStrip(BackendKind kind, const std::vector<std::
   all.insert(all.end(), overrides.begin(), overrides.end());
   const Scenario s = loadScenario(kQuick, all);
   const Model model = buildModel(s.params, generateIceSheet(s.params.sheet), s.source);
-  const double breaking_curvature = 108e3 / (328e6 * 0.051 / (2.0 * (1.0 - 0.3 * 0.3)));
+  const IceParams& ice = s.params.ice;  // quick.yaml's M-2 ice: 0.0118 1/m
+  const double breaking_curvature =
+      ice.flexural_strength / plateStressPerCurvature(ice.youngs_modulus, ice.poisson_ratio, ice.thickness);
   double x0 = 1e9, x1 = -1e9;
   for (const CellMotion& m : model.initial) x0 = std::min(x0, m.x), x1 = std::max(x1, m.x);
   const double cut = x1 - 0.4;
