@@ -6,7 +6,7 @@ import unittest
 import rospy
 import rostest
 from geometry_msgs.msg import Twist
-from std_srvs.srv import Empty
+from std_srvs.srv import Empty, Trigger
 from thin_ice_sim.msg import SimStatus
 from thin_ice_sim.srv import Step
 
@@ -41,8 +41,13 @@ class NodeFaultTest(unittest.TestCase):
         self.assertFalse(rospy.ServiceProxy("sim/step", Step)(steps=10, duration=0.0).success)
         self.assertFalse(rospy.ServiceProxy("sim/step", Step)(steps=0, duration=float("nan")).success)
         self.assertFalse(rospy.ServiceProxy("sim/step", Step)(steps=0, duration=-1.0).success)
-        with self.assertRaises(rospy.ServiceException):  # unpause is refused until a reset
-            rospy.ServiceProxy("sim/unpause", Empty)()
+        refused = rospy.ServiceProxy("sim/unpause", Trigger)()  # refused until a reset, with the reason
+        self.assertFalse(refused.success)
+        self.assertIn("blow-up", refused.message)
+        self.assertIn("sim/reset", refused.message)
+        time.sleep(0.5)
+        self.assertTrue(self.status.paused)
+        self.assertEqual(self.status.sim_time, frozen)
         publisher = rospy.Publisher("pusher/cmd_vel", Twist, queue_size=10)
         time.sleep(0.5)
         bad = Twist()
@@ -51,6 +56,7 @@ class NodeFaultTest(unittest.TestCase):
         rospy.ServiceProxy("sim/reset", Empty)()
         status = self.wait_status(lambda s: s.last_error == "" and s.sim_time == 0.0, 10.0, "the reset")
         self.assertEqual(status.broken_bonds, 0)
+        self.assertTrue(rospy.ServiceProxy("sim/unpause", Trigger)().success)  # and then it runs again
 
 
 if __name__ == "__main__":

@@ -18,7 +18,7 @@ import tf2_ros
 import yaml
 from geometry_msgs.msg import Twist, WrenchStamped
 from rosgraph_msgs.msg import Clock
-from std_srvs.srv import Empty
+from std_srvs.srv import Empty, Trigger
 from visualization_msgs.msg import MarkerArray
 
 from thin_ice_sim.msg import PanelLoads, SimStatus
@@ -49,7 +49,7 @@ class NodeInterfaceTest(unittest.TestCase):
         for name in ("sim/pause", "sim/unpause", "sim/reset", "sim/step"):
             rospy.wait_for_service(name, timeout=60.0)
         cls.pause = rospy.ServiceProxy("sim/pause", Empty)
-        cls.unpause = rospy.ServiceProxy("sim/unpause", Empty)
+        cls.unpause = rospy.ServiceProxy("sim/unpause", Trigger)
         cls.reset = rospy.ServiceProxy("sim/reset", Empty)
         cls.step = rospy.ServiceProxy("sim/step", Step)
         cls.tf_buffer = tf2_ros.Buffer()
@@ -191,7 +191,7 @@ class NodeInterfaceTest(unittest.TestCase):
         self.assertEqual(status.sim_time, 0.0)
         self.assertEqual(status.pushed_length, 0.0)
         self.assertEqual(status.broken_bonds, 0)
-        self.unpause()
+        self.assertTrue(self.unpause().success)
         self.assertFalse(self.latest_status().paused)
 
     def test_07_loads_become_nonzero_when_the_ice_reaches_the_structure(self):

@@ -238,14 +238,19 @@ bool SimNode::onPause(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
   return true;
 }
 
-bool SimNode::onUnpause(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
+bool SimNode::onUnpause(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
   if (!sim_->healthy()) {
-    ROS_WARN("thin_ice_sim: cannot unpause after a numerical blow-up; call sim/reset");
-    return false;
+    // Answered, not failed: a failed call reaches the client as an exception without the reason.
+    response.success = false;
+    response.message = "cannot unpause after a numerical blow-up (" + sim_->lastError() + "); call sim/reset";
+    ROS_WARN("thin_ice_sim: %s", response.message.c_str());
+    return true;
   }
   sim_->resume();
   rtf_window_start_ = ros::WallTime::now();
   rtf_window_sim_start_ = sim_->time();
+  response.success = true;
+  response.message = "running";
   return true;
 }
 

@@ -6,6 +6,7 @@
 #include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
 #include <std_srvs/Empty.h>
+#include <std_srvs/Trigger.h>
 #include <tf2_ros/static_transform_broadcaster.h>
 #include <tf2_ros/transform_broadcaster.h>
 
@@ -67,7 +68,8 @@ class SimNode {
  private:
   void onCommand(const geometry_msgs::Twist& command);
   bool onPause(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
-  bool onUnpause(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
+  /// Runs the simulation again; after a numerical blow-up it answers success = false and why.
+  bool onUnpause(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response);
   bool onReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
   bool onStep(thin_ice_sim::Step::Request& request, thin_ice_sim::Step::Response& response);
 
