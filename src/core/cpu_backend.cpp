@@ -5,6 +5,7 @@
 //   the bonds' q_b, the cells' nu_k and plate forces           bonds, cells, cells)
 //   RMIB bond forces and failure (cpu_bond_pass.cpp)          (parallel over bonds)   Eqs. 8-13
 //   DEM contact forces of the candidate pairs                 (parallel over pairs)   Eqs. 1-4
+//     (a pair kept apart by an edge found in an earlier step skips the clip: pair_separation.hpp)
 //   per cell: gather bond and contact forces in a fixed order, water, structure, pusher,
 //   bottom and walls, then symplectic Euler                   (parallel over cells)   Eqs. 14-17
 //   structure loads summed in cell order                      (serial, touching cells only)
@@ -25,6 +26,7 @@
 #include "cpu_bond_pass.hpp"
 #include "thin_ice_sim/incidence.hpp"
 #include "thin_ice_sim/neighbour_search.hpp"
+#include "thin_ice_sim/physics/pair_separation.hpp"
 #include "thin_ice_sim/physics/sheet_plate.hpp"
 
 namespace thin_ice {
@@ -35,6 +37,10 @@ constexpr int kV = kMaxPolygonVertices;
 /// microseconds, more than a small scene's whole step (measured: a 20-cell strip ran 10x slower
 /// on two threads than on one).
 constexpr int kMinCellsForThreads = 2000;
+/// A remembered separating edge lets a pair skip the clip while it keeps the polygons more than
+/// this fraction of r_i + r_j apart [-]: at least 2^16 steps of the clip's integer grid
+/// (pair_separation.hpp), 0.07 mm for two 0.2 m cells.
+constexpr double kSeparationGapFraction = 1.0 / 4096.0;
 
 
 class CpuBackend final : public Backend {
@@ -78,6 +84,7 @@ class CpuBackend final : public Backend {
     contact_i_.clear();
     contact_j_.clear();
     contact_reference_.clear();
+    contact_separating_edge_.clear();
     rebuild_requested_ = true;
   }
 
@@ -178,6 +185,7 @@ class CpuBackend final : public Backend {
     previous_i_.swap(contact_i_);
     previous_j_.swap(contact_j_);
     previous_reference_.swap(contact_reference_);
+    previous_separating_edge_.swap(contact_separating_edge_);
     kept_ranges_.resize(ranges);
     const long candidate_count = static_cast<long>(candidates.size());
 #pragma omp parallel for num_threads(ranges) schedule(static, 1) if (ranges > 1)
@@ -188,10 +196,13 @@ class CpuBackend final : public Backend {
     contact_i_.clear();
     contact_j_.clear();
     contact_reference_.clear();
+    contact_separating_edge_.clear();
     for (const KeptPairs& range : kept_ranges_) {
       contact_i_.insert(contact_i_.end(), range.i.begin(), range.i.end());
       contact_j_.insert(contact_j_.end(), range.j.begin(), range.j.end());
       contact_reference_.insert(contact_reference_.end(), range.reference.begin(), range.reference.end());
+      contact_separating_edge_.insert(contact_separating_edge_.end(), range.separating_edge.begin(),
+                                      range.separating_edge.end());
     }
     contact_touching_.resize(contact_i_.size());
     contact_load_.resize(contact_i_.size());
@@ -205,6 +216,7 @@ class CpuBackend final : public Backend {
   struct KeptPairs {
     std::vector<int> i, j;
     std::vector<double> reference;  ///< S_ref carried from the previous list, -1: new
+    std::vector<int> separating_edge;  ///< carried likewise, kNoSeparatingEdge: new
   };
 
   /// Candidates [first, end) whose bounding circles (radius r + margin) can meet before the next
@@ -214,6 +226,7 @@ class CpuBackend final : public Backend {
     out.i.clear();
     out.j.clear();
     out.reference.clear();
+    out.separating_edge.clear();
     if (first >= end) return;
     const double margin = model_.constants.search_margin;
     // The previous list is sorted by (i, j) too: start at its first pair of this range's first i
@@ -234,6 +247,9 @@ class CpuBackend final : public Backend {
       out.i.push_back(p.i);
       out.j.push_back(p.j);
       out.reference.push_back(kept ? previous_reference_[cursor] : -1.0);
+      // After restoreState the saved pairs come without their edges (a hint, not state).
+      const bool known = kept && cursor < previous_separating_edge_.size();
+      out.separating_edge.push_back(known ? previous_separating_edge_[cursor] : kNoSeparatingEdge);
     }
   }
 
@@ -339,9 +355,20 @@ class CpuBackend final : public Backend {
         contact_reference_[p] = 0.0;
         continue;
       }
-      const PolygonOverlap overlap = intersectConvexPolygons(
-          &world_[static_cast<size_t>(i) * kV], model_.vertex_count[i], &world_[static_cast<size_t>(j) * kV],
-          model_.vertex_count[j]);
+      const Vec2* wi = &world_[static_cast<size_t>(i) * kV];
+      const Vec2* wj = &world_[static_cast<size_t>(j) * kV];
+      const int ni = model_.vertex_count[i], nj = model_.vertex_count[j];
+      // Apart by more than the clip's rounding along the edge that kept them apart last time: the
+      // clip would give no overlap, so the pair is apart (pair_separation.hpp).
+      const double gap = kSeparationGapFraction * (model_.radius[i] + model_.radius[j]);
+      int& separating_edge = contact_separating_edge_[p];
+      if (edgeSeparates(wi, ni, wj, nj, separating_edge, gap)) {
+        contact_touching_[p] = 0;
+        contact_reference_[p] = 0.0;
+        continue;
+      }
+      const PolygonOverlap overlap = intersectConvexPolygons(wi, ni, wj, nj);
+      separating_edge = overlap.area > 0.0 ? kNoSeparatingEdge : findSeparatingEdge(wi, ni, wj, nj, gap);
       const BodyState body_i = body(i), body_j = body(j);
       const PairForce f = demContactForce(overlap, body_i, body_j, model_.constants.contact, contact_reference_[p]);
       contact_load_[p] = contactLoad(f, body_i.centroid, body_j.centroid);
@@ -450,8 +477,10 @@ class CpuBackend final : public Backend {
   FixedRadiusNeighbourSearch search_;
   std::vector<int> contact_i_, contact_j_;  ///< sorted by (i, j)
   std::vector<double> contact_reference_;   ///< S_ref of each pair [m^2] (contact.hpp), -1: new
+  std::vector<int> contact_separating_edge_;  ///< an edge that kept the pair apart (pair_separation.hpp)
   std::vector<int> previous_i_, previous_j_;
   std::vector<double> previous_reference_;
+  std::vector<int> previous_separating_edge_;
   std::vector<KeptPairs> kept_ranges_;     ///< (threads) the pairs each range of candidates kept
   std::vector<unsigned char> contact_touching_;  ///< (pairs) S > 0 in this step
   std::vector<PairLoad> contact_load_;
