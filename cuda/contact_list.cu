@@ -5,6 +5,8 @@
 
 #include <algorithm>
 
+#include "thin_ice_sim/physics/pair_separation.hpp"
+
 namespace thin_ice {
 namespace cuda {
 namespace {
@@ -120,9 +122,11 @@ __global__ void writeCandidates(RebuildView v, const int* offsets, int* pair_i, 
   }
 }
 
-/// S_ref of each new pair: the old list's value when the pair was there, else -1 (new).
+/// S_ref and the separating edge of each new pair: the old list's when the pair was there, else
+/// -1 (new) and kNoSeparatingEdge.
 __global__ void carryReferences(int pairs, const int* pair_i, const int* pair_j, int old_count, const int* old_i,
-                                const int* old_j, const double* old_reference, double* reference) {
+                                const int* old_j, const double* old_reference, const int* old_separating_edge,
+                                double* reference, int* separating_edge) {
   const int p = blockIdx.x * blockDim.x + threadIdx.x;
   if (p >= pairs) return;
   const int i = pair_i[p], j = pair_j[p];
@@ -132,7 +136,9 @@ __global__ void carryReferences(int pairs, const int* pair_i, const int* pair_j,
     if (old_i[mid] < i || (old_i[mid] == i && old_j[mid] < j)) lo = mid + 1;
     else hi = mid;
   }
-  reference[p] = (lo < old_count && old_i[lo] == i && old_j[lo] == j) ? old_reference[lo] : -1.0;
+  const bool kept = lo < old_count && old_i[lo] == i && old_j[lo] == j;
+  reference[p] = kept ? old_reference[lo] : -1.0;
+  separating_edge[p] = kept ? old_separating_edge[lo] : kNoSeparatingEdge;
 }
 
 __global__ void countIncidence(int pairs, const int* pair_i, const int* pair_j, int* count) {
@@ -190,6 +196,7 @@ bool DeviceContactList::reserve(size_t pairs) {
   pair_i_.resize(capacity);
   pair_j_.resize(capacity);
   reference_area_.resize(capacity);
+  separating_edge_.resize(capacity);
   touching_.resize(capacity);
   load_.resize(capacity);
   entries_.resize(2 * capacity);
@@ -204,6 +211,8 @@ bool DeviceContactList::seed(const std::vector<int>& i, const std::vector<int>& 
     TIS_CUDA_CHECK(cudaMemcpy(pair_j_.get(), j.data(), j.size() * sizeof(int), cudaMemcpyHostToDevice));
     TIS_CUDA_CHECK(cudaMemcpy(reference_area_.get(), reference.data(), reference.size() * sizeof(double),
                               cudaMemcpyHostToDevice));
+    // Checkpoints hold no edges: every byte 0xff is kNoSeparatingEdge (-1) in each int.
+    TIS_CUDA_CHECK(cudaMemset(separating_edge_.get(), 0xff, i.size() * sizeof(int)));
   }
   count_ = static_cast<int>(i.size());
   return moved;
@@ -267,16 +276,20 @@ bool DeviceContactList::rebuild(const CandidateInputs& in, cudaStream_t stream) 
   new_i_.resize(total);
   new_j_.resize(total);
   new_reference_.resize(total);
+  new_separating_edge_.resize(total);
   writeCandidates<<<grid, kThreads, 0, stream>>>(view, candidate_offsets_.get(), new_i_.get(), new_j_.get());
   carryReferences<<<blocksFor(total), kThreads, 0, stream>>>(total, new_i_.get(), new_j_.get(), count_,
                                                               pair_i_.get(), pair_j_.get(), reference_area_.get(),
-                                                              new_reference_.get());
+                                                              separating_edge_.get(), new_reference_.get(),
+                                                              new_separating_edge_.get());
   TIS_CUDA_CHECK(cudaStreamSynchronize(stream));  // the old list is read; now it may be dropped
   const bool moved = reserve(static_cast<size_t>(total));
   if (total > 0) {
     TIS_CUDA_CHECK(cudaMemcpyAsync(pair_i_.get(), new_i_.get(), total * sizeof(int), cudaMemcpyDeviceToDevice, stream));
     TIS_CUDA_CHECK(cudaMemcpyAsync(pair_j_.get(), new_j_.get(), total * sizeof(int), cudaMemcpyDeviceToDevice, stream));
     TIS_CUDA_CHECK(cudaMemcpyAsync(reference_area_.get(), new_reference_.get(), total * sizeof(double),
+                                   cudaMemcpyDeviceToDevice, stream));
+    TIS_CUDA_CHECK(cudaMemcpyAsync(separating_edge_.get(), new_separating_edge_.get(), total * sizeof(int),
                                    cudaMemcpyDeviceToDevice, stream));
   }
   count_ = total;

@@ -53,6 +53,8 @@ class DeviceContactList {
   const int* pairI() const { return pair_i_.get(); }
   const int* pairJ() const { return pair_j_.get(); }
   double* referenceArea() const { return reference_area_.get(); }
+  /// Per pair, an edge that kept it apart (pair_separation.hpp), carried like S_ref; not saved.
+  int* separatingEdge() const { return separating_edge_.get(); }
   unsigned char* touching() const { return touching_.get(); }
   PairLoad* load() const { return load_.get(); }
   const int* incidenceOffsets() const { return offsets_.get(); }
@@ -66,12 +68,12 @@ class DeviceContactList {
   int count_ = 0;
   unsigned int table_size_ = 1;  ///< bins of the spatial hash, a power of two >= 2 x cells
   // The list the step reads (capacity-sized).
-  DeviceArray<int> pair_i_, pair_j_, offsets_, entries_;
+  DeviceArray<int> pair_i_, pair_j_, offsets_, entries_, separating_edge_;
   DeviceArray<double> reference_area_;
   DeviceArray<unsigned char> touching_;
   DeviceArray<PairLoad> load_;
   // The rebuild's scratch.
-  DeviceArray<int> new_i_, new_j_, count_per_cell_, candidate_offsets_, cursor_, cell_ids_, sorted_cells_;
+  DeviceArray<int> new_i_, new_j_, new_separating_edge_, count_per_cell_, candidate_offsets_, cursor_, cell_ids_, sorted_cells_;
   DeviceArray<int> bin_start_, bin_end_;
   DeviceArray<double> new_reference_;
   DeviceArray<unsigned int> keys_, sorted_keys_;

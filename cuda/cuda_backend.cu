@@ -36,6 +36,7 @@
 #include <vector>
 
 #include "contact_list.cuh"
+#include "thin_ice_sim/physics/pair_separation.hpp"
 #include "cuda_check.hpp"
 #include "device_array.cuh"
 #include "device_info.cuh"
@@ -157,8 +158,8 @@ __global__ void bondForces(int bonds, RunScalars* run, ModelConstants c, const i
 
 __global__ void contactForces(int capacity, RunScalars* run, ModelConstants c, const int* pair_i, const int* pair_j,
                               const CellMotion* motion, const double* mass, const double* inertia, const Vec2* world,
-                              const int* vertex_count, const double* box, double* reference,
-                              unsigned char* touching, PairLoad* load) {
+                              const int* vertex_count, const double* radius, const double* box, double* reference,
+                              int* separating_edge, unsigned char* touching, PairLoad* load) {
   const int p = blockIdx.x * blockDim.x + threadIdx.x;
   if (p >= capacity || run->stop || p >= run->pair_count) return;
   const int i = pair_i[p], j = pair_j[p];
@@ -169,8 +170,19 @@ __global__ void contactForces(int capacity, RunScalars* run, ModelConstants c, c
     reference[p] = 0.0;
     return;
   }
-  const PolygonOverlap overlap = intersectConvexPolygons(world + (size_t)i * kV, vertex_count[i],
-                                                         world + (size_t)j * kV, vertex_count[j]);
+  // Apart by more than the clip's rounding along the edge that kept them apart last time: the
+  // clip would give no overlap (pair_separation.hpp; the CPU backend does the same).
+  const Vec2* wi = world + (size_t)i * kV;
+  const Vec2* wj = world + (size_t)j * kV;
+  const int ni = vertex_count[i], nj = vertex_count[j];
+  const double gap = kSeparationGapFraction * (radius[i] + radius[j]);
+  if (edgeSeparates(wi, ni, wj, nj, separating_edge[p], gap)) {
+    touching[p] = 0;
+    reference[p] = 0.0;
+    return;
+  }
+  const PolygonOverlap overlap = intersectConvexPolygons(wi, ni, wj, nj);
+  separating_edge[p] = overlap.area > 0.0 ? kNoSeparatingEdge : findSeparatingEdge(wi, ni, wj, nj, gap);
   const BodyState body_i = bodyOf(motion[i], mass[i], inertia[i]), body_j = bodyOf(motion[j], mass[j], inertia[j]);
   const PairForce f = demContactForce(overlap, body_i, body_j, c.contact, reference[p]);
   load[p] = contactLoad(f, body_i.centroid, body_j.centroid);
@@ -442,7 +454,8 @@ class CudaBackend final : public Backend {
     const int capacity = contacts_.capacity();
     contactForces<<<blocksFor(capacity), kThreads, 0, stream_>>>(
         capacity, run, c, contacts_.pairI(), contacts_.pairJ(), motion_.get(), mass_.get(), inertia_.get(),
-        world_.get(), vertex_count_.get(), box_.get(), contacts_.referenceArea(), contacts_.touching(),
+        world_.get(), vertex_count_.get(), radius_.get(), box_.get(), contacts_.referenceArea(),
+        contacts_.separatingEdge(), contacts_.touching(),
         contacts_.load());
     const CellStepInputs in = {mass_.get(),
                                inertia_.get(),

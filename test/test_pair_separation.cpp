@@ -19,8 +19,8 @@ namespace {
 
 using Polygon = std::vector<Vec2>;
 
-/// The fraction of r_a + r_b the contact loop asks for (cpu_backend.cpp's kSeparationGapFraction).
-constexpr double kGapFraction = 1.0 / 4096.0;
+/// The fraction of r_a + r_b the contact loops ask for.
+constexpr double kGapFraction = kSeparationGapFraction;
 
 Polygon square(double x0, double y0, double side) {
   return {{x0, y0}, {x0 + side, y0}, {x0 + side, y0 + side}, {x0, y0 + side}};  // counter-clockwise

@@ -37,10 +37,6 @@ constexpr int kV = kMaxPolygonVertices;
 /// microseconds, more than a small scene's whole step (measured: a 20-cell strip ran 10x slower
 /// on two threads than on one).
 constexpr int kMinCellsForThreads = 2000;
-/// A remembered separating edge lets a pair skip the clip while it keeps the polygons more than
-/// this fraction of r_i + r_j apart [-]: at least 2^16 steps of the clip's integer grid
-/// (pair_separation.hpp), 0.07 mm for two 0.2 m cells.
-constexpr double kSeparationGapFraction = 1.0 / 4096.0;
 
 
 class CpuBackend final : public Backend {

@@ -31,6 +31,10 @@ namespace thin_ice {
 /// No edge is known to separate the pair.
 constexpr int kNoSeparatingEdge = -1;
 
+/// The gap the contact loops ask of a separating edge, as a fraction of r_i + r_j [-]: at least
+/// 2^16 steps of the clip's grid (above), 0.07 mm for two 0.2 m cells.
+constexpr double kSeparationGapFraction = 1.0 / 4096.0;
+
 namespace pair_separation_detail {
 
 /// Whether edge k of `p` (p[k] -> p[k+1]) has every vertex of `q` more than `gap` [m] beyond its line.
