@@ -3,7 +3,10 @@
 byte for byte, as the run made in one go, and a summary whose statistics cover the whole history;
 one stopped between rows (t = 0.41 s) writes the same rows again from the second row boundary on;
 the first failure, which starts phase 1, is found whether it lies before or after the resumption;
-a directory that cannot be resumed is refused with exit status 2 and left as it was.
+an override given with --resume holds from the resumption on (rows before it unchanged, after it
+changed, the summary saying from which L) and stays through a later resumption; a directory that
+cannot be resumed, or an override that would change the mesh, is refused with exit status 2 and
+the directory left as it was.
 
     test_run_resume.py THIN_ICE_RUN SOURCE_DIR
 """
@@ -27,14 +30,19 @@ def main():
     scenario = strip_scenario(source) + ["--output-interval", "0.02"]
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
-        whole, split, off_grid, early = (os.path.join(tmp, d) for d in ("whole", "split", "off_grid", "early"))
+        whole, split, off_grid, early, switched = (os.path.join(tmp, d)
+                                                   for d in ("whole", "split", "off_grid", "early", "switched"))
         for args in (scenario + ["--until-time", "0.8", "--out", whole],
                      scenario + ["--until-time", "0.4", "--out", split],
                      ["--resume", split, "--until-time", "0.8"],
                      scenario + ["--until-time", "0.2", "--out", early],  # before contact: no bond broken yet
                      ["--resume", early, "--until-time", "0.8"],
                      scenario + ["--until-time", "0.41", "--out", off_grid],
-                     ["--resume", off_grid, "--until-time", "0.8"]):
+                     ["--resume", off_grid, "--until-time", "0.8"],
+                     # twice the ice-ice friction from 0.4 s (L = 0.08 m) on, kept through a second resumption
+                     scenario + ["--until-time", "0.4", "--out", switched],
+                     ["--resume", switched, "--set", "ice.friction_ice_ice=0.6", "--until-time", "0.8"],
+                     ["--resume", switched, "--until-time", "0.9"]):
             done = run(tool, args)
             if done.returncode != 0:
                 sys.exit(f"FAIL: {' '.join(args)}: exit status {done.returncode}: {done.stderr.strip()}")
@@ -68,6 +76,16 @@ def main():
                 not off_rows[22].startswith("0.42,") or off_rows[23:] != whole_rows[22:]):
             failures.append(f"resumed after a short row at 0.41 s: {len(off_rows)} lines, rows 21-22 "
                             f"{off_rows[21][:12]!r} {off_rows[22][:12]!r}; expected the one-go rows with a split row at 0.41 s")
+        switched_rows = open(os.path.join(switched, "loads.csv")).read().splitlines()
+        if switched_rows[:21] != whole_rows[:21] or switched_rows[21:41] == whole_rows[21:41]:
+            failures.append("with ice.friction_ice_ice=0.6 from 0.4 s: the rows up to 0.4 s should be the one-go "
+                            "run's and the rows after it should differ")
+        st = json.load(open(os.path.join(switched, "summary.json")))
+        if (st["scenario"]["overrides"][-1] != "ice.friction_ice_ice=0.6" or st["resumed_at_m"] != [0.08, 0.16] or
+                st["overrides_from_m"] != [{"set": "ice.friction_ice_ice=0.6", "from_m": 0.08}] or
+                sw["overrides_from_m"] != []):
+            failures.append(f"switched run's summary: overrides {st['scenario']['overrides']}, resumed_at_m "
+                            f"{st['resumed_at_m']}, overrides_from_m {st['overrides_from_m']} (one go: {sw['overrides_from_m']})")
         if abs(ss["load"]["peak_at_m"] - sw["load"]["peak_at_m"]) > 1e-9:
             failures.append(f"peak at {ss['load']['peak_at_m']} m after resuming, {sw['load']['peak_at_m']} in one go")
 
@@ -94,7 +112,8 @@ def main():
         before = {d: contents(d) for d in (split, corrupt, no_checkpoint, elsewhere)}
         cases = [(["--resume", split, "--until-time", "0.8"], "already at t = 0.8"),
                  (["--resume", split, "--until-time", "1", "--out", tmp], "give none of them"),
-                 (["--resume", split, "--until-time", "1", "--set", "ice.density=900"], "give none of them"),
+                 (["--resume", split, "--until-time", "1", "--set", "sheet.seed=2"], "would change the mesh"),
+                 (["--resume", split, "--until-time", "1", "--set", "numerics.time_step=1e-5"], "would change the mesh"),
                  (["--resume", corrupt, "--until-time", "1"], "truncated"),
                  (["--resume", no_checkpoint, "--until-time", "1"], "has no checkpoint.bin"),
                  (["--resume", elsewhere, "--until-time", "1"], "relative to the directory the run was started from"),
@@ -144,7 +163,7 @@ def main():
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("OK: resumed runs identical to the run in one go (from the second row boundary after a short row); "
-          "ten bad requests refused with exit status 2")
+          "an override switched on at a resumption; eleven bad requests refused with exit status 2")
 
 
 if __name__ == "__main__":

@@ -29,12 +29,20 @@ double csvNumber(const CsvRow& row, const std::string& column, const std::string
 Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, std::string& warning);
 
 /// What a resumed run takes over from RUN/summary.json.
+/// An override given when the run was resumed (thin_ice_run --resume DIR --set ...): it holds
+/// from that pushed length on, the run before it went without.
+struct SwitchedOverride {
+  std::string set;      ///< "section.key=value"
+  double from_length;   ///< [m] pushed length at the resumption
+};
+
 struct RunSummary {
   std::string status;              ///< "completed", "interrupted" or "unhealthy"
   double output_interval = 0.0;    ///< [s] between rows of loads.csv
   double wall_time = 0.0;          ///< [s] of stepping and output, every segment so far
   long steps = 0;                  ///< time steps taken by the end of the run
   std::vector<double> resumed_at;  ///< [m] pushed lengths at which the run was resumed before
+  std::vector<SwitchedOverride> switched;  ///< overrides_from_m: the overrides given at resumptions
   std::string scenario_name;       ///< e.g. "M-2": the Table 6 experiment it is compared with
   double structure_width = 0.0;    ///< [m] structure_width_m (NaN when the summary lacks it)
 };

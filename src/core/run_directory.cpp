@@ -117,6 +117,15 @@ RunSummary readRunSummary(const std::string& run_dir) {
   if (summary["resumed_at_m"]) {
     for (const YAML::Node& l : summary["resumed_at_m"]) r.resumed_at.push_back(l.as<double>());
   }
+  if (summary["overrides_from_m"]) {
+    for (const YAML::Node& s : summary["overrides_from_m"]) {
+      if (!s["set"] || !s["from_m"]) {
+        throw std::runtime_error(path + ": an entry of \"overrides_from_m\" is " + YAML::Dump(s) +
+                                 "; allowed: {\"set\": \"section.key=value\", \"from_m\": a length [m]}");
+      }
+      r.switched.push_back({s["set"].as<std::string>(), s["from_m"].as<double>()});
+    }
+  }
   if (summary["scenario"] && summary["scenario"]["name"]) r.scenario_name = summary["scenario"]["name"].as<std::string>();
   // Not needed to resume, so a missing or null width (jsonNumber's NaN) is NaN here, not an error.
   const YAML::Node width = summary["structure_width_m"];

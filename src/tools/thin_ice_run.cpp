@@ -2,8 +2,8 @@
 // statistics (Section 5.1, Table 6) and optional cell snapshots.
 //   thin_ice_run --scenario FILE [--set section.key=value]... (--until-length L | --until-time T)
 //                [--backend cpu|cuda|auto] [--output-interval S] [--snapshots N] --out DIR
-//   thin_ice_run --resume DIR [--accept-changed-scenario] (--until-length L | --until-time T)
-//                [--backend cpu|cuda|auto] [--snapshots N] [--profiles]
+//   thin_ice_run --resume DIR [--accept-changed-scenario] [--set section.key=value]...
+//                (--until-length L | --until-time T) [--backend cpu|cuda|auto] [--snapshots N] [--profiles]
 // Writes DIR/loads.csv (one row per output interval, through loads.csv.partial), DIR/summary.json,
 // DIR/checkpoint.bin (the state at the end, unless the run became unhealthy) and with --snapshots
 // DIR/snapshots/cells_RRRRRR.csv (RRRRRR: loads.csv data row, 1-based; 000000: the sheet at rest)
@@ -13,7 +13,10 @@
 // target (the whole run's L or T), on any backend: the rows are appended to DIR/loads.csv (the old
 // file stays whole until the new one is complete), the statistics cover the whole history, and
 // the summary's wall time is the sum of the segments. --snapshots N then spreads N snapshots over
-// the new segment, the last at its end.
+// the new segment, the last at its end. --set with --resume switches a law or a boundary from the
+// resumption on (e.g. ice.plate_bending=true): the override joins the run's, and the summary's
+// overrides_from_m says from which L it holds. Keys of sheet and numerics (the mesh and the time
+// stepping the checkpoint and the rows are tied to) and structure.panels (the columns) are refused.
 // Exit status: 0 done; 1 I/O or backend failure; 2 bad arguments or scenario, or a run directory
 // that cannot be resumed (nothing written); 3 the simulation became unhealthy (rows up to then and
 // the summary are kept; a resumed run is left as it was and the segment's rows go to
@@ -66,7 +69,8 @@ const char* kUsage =
     "(--until-length L | --until-time T)\n"
     "                    [--backend cpu|cuda|auto] [--output-interval S] [--snapshots N] [--profiles]\n"
     "                    --out DIR\n"
-    "       thin_ice_run --resume DIR [--accept-changed-scenario] (--until-length L | --until-time T)\n"
+    "       thin_ice_run --resume DIR [--accept-changed-scenario] [--set section.key=value]...\n"
+    "                    (--until-length L | --until-time T)\n"
     "                    [--backend cpu|cuda|auto] [--snapshots N] [--profiles]\n";
 
 struct UsageError : std::runtime_error {  // bad command line: exit status 2 with the usage
@@ -151,9 +155,16 @@ Options parseOptions(int argc, char** argv) {
   }
   if (!o.resume.empty()) {
     // The run directory holds the scenario, its overrides and the output interval.
-    if (!o.scenario.empty() || !o.overrides.empty() || !o.out.empty() || o.output_interval > 0.0) {
-      throw UsageError("--resume DIR takes the scenario, --set, --output-interval and --out of the run in DIR; "
+    if (!o.scenario.empty() || !o.out.empty() || o.output_interval > 0.0) {
+      throw UsageError("--resume DIR takes the scenario, --output-interval and --out of the run in DIR; "
                        "give none of them");
+    }
+    for (const std::string& set : o.overrides) {
+      if (set.rfind("sheet.", 0) == 0 || set.rfind("numerics.", 0) == 0 || set.rfind("structure.panels=", 0) == 0) {
+        throw UsageError("--set '" + set + "' with --resume would change the mesh, the time stepping or the load "
+                         "columns the run's checkpoint and rows are tied to; allowed: keys of ice, water, bottom, "
+                         "structure (but panels), pusher and channel, which then hold from the resumption on");
+      }
     }
     o.out = o.resume;
   } else {
@@ -263,6 +274,7 @@ struct Continuation {
   LoadSample last;                    ///< its last row (time, length, bond counts)
   double previous_wall = 0.0;         ///< [s] of the segments before
   std::vector<double> resumed_at;     ///< [m] where each resumption began, this one last
+  std::vector<thin_ice::SwitchedOverride> switched;  ///< overrides given at resumptions, this one's last
   double start_fraction = 0.0;        ///< progress towards the target at the resumption
 };
 
@@ -438,6 +450,11 @@ std::string summaryJson(const Simulation& sim, const Options& o, const RunResult
     << ", \"real_time_factor\": " << num(wall > 0.0 ? sim.time() / wall : NAN);
   j << ",\n  \"resumed_at_m\": [";
   for (std::size_t k = 0; k < cont.resumed_at.size(); ++k) j << (k ? ", " : "") << num(cont.resumed_at[k]);
+  j << "],\n  \"overrides_from_m\": [";
+  for (std::size_t k = 0; k < cont.switched.size(); ++k) {
+    j << (k ? ", " : "") << "{\"set\": " << jsonString(cont.switched[k].set)
+      << ", \"from_m\": " << num(cont.switched[k].from_length) << "}";
+  }
   j << "]"
     << ",\n  \"intact_bonds\": " << last.intact_bonds << ", \"broken_bonds\": " << last.broken_bonds
     << ",\n  \"calibration_factor\": " << num(sc.params.structure.calibration_factor)
@@ -508,6 +525,11 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
     std::string warning;
     thin_ice::Scenario loaded = thin_ice::loadRunScenario(dir, o.accept_changed_scenario, warning);
     if (!warning.empty()) std::fprintf(stderr, "thin_ice_run: warning: %s\n", warning.c_str());
+    if (!o.overrides.empty()) {  // switched on from here: after the run's own, so they win
+      std::vector<std::string> overrides = loaded.overrides;
+      overrides.insert(overrides.end(), o.overrides.begin(), o.overrides.end());
+      loaded = thin_ice::loadScenario(loaded.source, overrides);
+    }
     const std::string checkpoint_path = dir + "/checkpoint.bin";
     if (!std::filesystem::exists(checkpoint_path)) {
       throw ResumeError(dir + " has no checkpoint.bin (thin_ice_run writes one at the end of every healthy run "
@@ -522,8 +544,9 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
   });
   auto sim = std::make_unique<Simulation>(scenario, o.backend);  // no device: exit status 1
   aboutTheDirectory(dir, [&] {
-    // A changed scenario file changed its hash too; loadRunScenario has already said so.
-    thin_ice::restoreCheckpoint(*sim, checkpoint, o.accept_changed_scenario);
+    // A changed scenario file changed its hash too; loadRunScenario has already said so. Overrides
+    // switched on here change it by design.
+    thin_ice::restoreCheckpoint(*sim, checkpoint, o.accept_changed_scenario || !o.overrides.empty());
     o.output_interval = summary.output_interval;
 
     // The history so far, which must end where the checkpoint is.
@@ -564,6 +587,8 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
     cont.previous_wall = summary.wall_time;
     cont.resumed_at = summary.resumed_at;
     cont.resumed_at.push_back(sim->pushedLength());
+    cont.switched = summary.switched;
+    for (const std::string& set : o.overrides) cont.switched.push_back({set, sim->pushedLength()});
     cont.start_fraction = reached / target;
   });
   return sim;
