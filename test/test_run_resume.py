@@ -5,8 +5,8 @@ one stopped between rows (t = 0.41 s) writes the same rows again from the second
 the first failure, which starts phase 1, is found whether it lies before or after the resumption;
 an override given with --resume holds from the resumption on (rows before it unchanged, after it
 changed, the summary saying from which L) and stays through a later resumption; a directory that
-cannot be resumed, or an override that would change the mesh, is refused with exit status 2 and
-the directory left as it was.
+cannot be resumed, or an override of a key a run under way cannot change, is refused with exit
+status 2 and the directory left as it was.
 
     test_run_resume.py THIN_ICE_RUN SOURCE_DIR
 """
@@ -112,8 +112,15 @@ def main():
         before = {d: contents(d) for d in (split, corrupt, no_checkpoint, elsewhere)}
         cases = [(["--resume", split, "--until-time", "0.8"], "already at t = 0.8"),
                  (["--resume", split, "--until-time", "1", "--out", tmp], "give none of them"),
-                 (["--resume", split, "--until-time", "1", "--set", "sheet.seed=2"], "would change the mesh"),
-                 (["--resume", split, "--until-time", "1", "--set", "numerics.time_step=1e-5"], "would change the mesh"),
+                 # what a run under way cannot change: the mesh (spaces around the key too), the time
+                 # stepping, the pusher's speed (the checkpoint holds it), the calibration factor
+                 (["--resume", split, "--until-time", "1", "--set", "sheet.seed=2"], "sheet.seed cannot change"),
+                 (["--resume", split, "--until-time", "1", "--set", " sheet . jitter = 0.2"], "sheet.jitter cannot change"),
+                 (["--resume", split, "--until-time", "1", "--set", "numerics.time_step=1e-5"], "numerics.time_step cannot"),
+                 (["--resume", split, "--until-time", "1", "--set", "pusher.velocity=0.1"], "pusher.velocity cannot"),
+                 (["--resume", split, "--until-time", "1", "--set", "structure.calibration_factor=0.5"],
+                  "structure.calibration_factor cannot"),
+                 (["--resume", split, "--until-time", "1", "--set", "ice.nonsense=1"], "unknown key 'nonsense'"),
                  (["--resume", corrupt, "--until-time", "1"], "truncated"),
                  (["--resume", no_checkpoint, "--until-time", "1"], "has no checkpoint.bin"),
                  (["--resume", elsewhere, "--until-time", "1"], "relative to the directory the run was started from"),
@@ -163,7 +170,7 @@ def main():
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("OK: resumed runs identical to the run in one go (from the second row boundary after a short row); "
-          "an override switched on at a resumption; eleven bad requests refused with exit status 2")
+          "an override switched on at a resumption; fifteen bad requests refused with exit status 2")
 
 
 if __name__ == "__main__":

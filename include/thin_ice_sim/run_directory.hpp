@@ -28,7 +28,6 @@ double csvNumber(const CsvRow& row, const std::string& column, const std::string
 /// which the caller has checked); `warning` then says so.
 Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, std::string& warning);
 
-/// What a resumed run takes over from RUN/summary.json.
 /// An override given when the run was resumed (thin_ice_run --resume DIR --set ...): it holds
 /// from that pushed length on, the run before it went without.
 struct SwitchedOverride {
@@ -36,6 +35,7 @@ struct SwitchedOverride {
   double from_length;   ///< [m] pushed length at the resumption
 };
 
+/// What a resumed run takes over from RUN/summary.json.
 struct RunSummary {
   std::string status;              ///< "completed", "interrupted" or "unhealthy"
   double output_interval = 0.0;    ///< [s] between rows of loads.csv

@@ -31,6 +31,11 @@ struct Scenario {
 /// thickness, ...). Nothing is simulated or written when it throws.
 Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides = {});
 
+/// The key an override sets, as "section.key" with the spaces the parser ignores removed
+/// (" ice . plate_bending = true" gives "ice.plate_bending"). Throws ScenarioError, prefixed with
+/// `source`, for text that is not section.key=value or names no key of the scenario format.
+std::string overrideKey(const std::string& text, const std::string& source);
+
 /// Checks the physical and numerical ranges of `params` (everything that can be checked without
 /// building the sheet); `source` prefixes the message. Throws ScenarioError.
 void validateParams(const Params& params, const std::string& source);

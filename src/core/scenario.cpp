@@ -381,19 +381,24 @@ std::string trim(const std::string& t) {
   return t.substr(first, t.find_last_not_of(" \t") - first + 1);
 }
 
-/// Applies "section.key=value"; returns "section.key".
-std::string applyOverride(const std::string& text, const std::string& path, Params& params) {
-  const std::string where = path + ": override '" + text + "': ";
+/// The section and field an override names; `where` prefixes the message.
+std::pair<const Section*, const Field*> overrideTarget(const std::string& text, const std::string& where) {
   const size_t eq = text.find('=');
   const size_t dot = text.find('.');
   if (eq == std::string::npos || dot == std::string::npos || dot > eq) {
     throw ScenarioError(where + "expected section.key=value");
   }
   const Section& section = findSection(trim(text.substr(0, dot)), where);
-  const Field& f = findField(section, trim(text.substr(dot + 1, eq - dot - 1)), where);
-  const YAML::Node value = parseYaml(text.substr(eq + 1), where);
-  applyValue(params, section, f, value, where);
-  return section.name + "." + f.key;
+  return {&section, &findField(section, trim(text.substr(dot + 1, eq - dot - 1)), where)};
+}
+
+/// Applies "section.key=value"; returns "section.key".
+std::string applyOverride(const std::string& text, const std::string& path, Params& params) {
+  const std::string where = path + ": override '" + text + "': ";
+  const auto [section, f] = overrideTarget(text, where);
+  const YAML::Node value = parseYaml(text.substr(text.find('=') + 1), where);
+  applyValue(params, *section, *f, value, where);
+  return section->name + "." + f->key;
 }
 
 // ----- Range checks ---------------------------------------------------------------------------
@@ -552,6 +557,11 @@ void validateParams(const Params& params, const std::string& source) {
   } catch (const RangeError& e) {
     throw ScenarioError(source + ": " + e.what());
   }
+}
+
+std::string overrideKey(const std::string& text, const std::string& source) {
+  const auto [section, field] = overrideTarget(text, source + ": override '" + text + "': ");
+  return section->name + "." + field->key;
 }
 
 Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides) {

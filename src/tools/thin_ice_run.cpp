@@ -13,10 +13,9 @@
 // target (the whole run's L or T), on any backend: the rows are appended to DIR/loads.csv (the old
 // file stays whole until the new one is complete), the statistics cover the whole history, and
 // the summary's wall time is the sum of the segments. --snapshots N then spreads N snapshots over
-// the new segment, the last at its end. --set with --resume switches a law or a boundary from the
-// resumption on (e.g. ice.plate_bending=true): the override joins the run's, and the summary's
-// overrides_from_m says from which L it holds. Keys of sheet and numerics (the mesh and the time
-// stepping the checkpoint and the rows are tied to) and structure.panels (the columns) are refused.
+// the new segment, the last at its end. --set with --resume switches a law on from the resumption
+// (e.g. ice.plate_bending=true): the override joins the run's, and the summary's overrides_from_m
+// says from which L it holds. Only the keys of kSwitchableKeys are taken there.
 // Exit status: 0 done; 1 I/O or backend failure; 2 bad arguments or scenario, or a run directory
 // that cannot be resumed (nothing written); 3 the simulation became unhealthy (rows up to then and
 // the summary are kept; a resumed run is left as it was and the segment's rows go to
@@ -158,13 +157,6 @@ Options parseOptions(int argc, char** argv) {
     if (!o.scenario.empty() || !o.out.empty() || o.output_interval > 0.0) {
       throw UsageError("--resume DIR takes the scenario, --output-interval and --out of the run in DIR; "
                        "give none of them");
-    }
-    for (const std::string& set : o.overrides) {
-      if (set.rfind("sheet.", 0) == 0 || set.rfind("numerics.", 0) == 0 || set.rfind("structure.panels=", 0) == 0) {
-        throw UsageError("--set '" + set + "' with --resume would change the mesh, the time stepping or the load "
-                         "columns the run's checkpoint and rows are tied to; allowed: keys of ice, water, bottom, "
-                         "structure (but panels), pusher and channel, which then hold from the resumption on");
-      }
     }
     o.out = o.resume;
   } else {
@@ -496,6 +488,29 @@ struct ResumeError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+/// The keys --set may switch at a resumption: the laws of the ice and the water, the friction of
+/// the rigid planes, and the thread count. Not the mesh, the masses or the floating level
+/// (thickness, densities), the geometry or the stiffness of the boundaries, the pusher's speed (the
+/// checkpoint holds it), the time stepping (the rows are counted in steps from t = 0) or the
+/// calibration factor and the structure's width (the statistics of the whole history use them).
+const std::set<std::string> kSwitchableKeys = {
+    "ice.flexural_strength", "ice.compressive_strength", "ice.youngs_modulus", "ice.vertical_modulus",
+    "ice.poisson_ratio", "ice.smoothing_exponent_h", "ice.smoothing_exponent_v", "ice.compression_coupling",
+    "ice.vertical_stress", "ice.curvature_failure", "ice.curvature_failure_scope", "ice.plate_bending",
+    "ice.vertical_slip_friction", "ice.friction_ice_ice", "ice.contact_damping_ratio", "ice.bond_damping_ratio",
+    "water.linear_drag", "water.quadratic_drag", "water.vertical_linear_drag", "water.vertical_quadratic_drag",
+    "structure.friction", "channel.friction", "bottom.friction", "pusher.friction", "numerics.threads"};
+
+/// Refuses an override that --resume cannot switch (ResumeError names it and what is allowed).
+void checkSwitchable(const std::string& set, const std::string& scenario_file) {
+  const std::string key = thin_ice::overrideKey(set, scenario_file);  // ScenarioError for an unknown key
+  if (kSwitchableKeys.count(key)) return;
+  std::string allowed;
+  for (const std::string& k : kSwitchableKeys) allowed += (allowed.empty() ? "" : " ") + k;
+  throw ResumeError("--set '" + set + "' with --resume: " + key + " cannot change under a run that is under way "
+                    "(its checkpoint, rows or statistics are tied to it); allowed there: " + allowed);
+}
+
 /// Runs `read` and turns what goes wrong into a ResumeError naming the directory (exit status 2).
 template <typename Read>
 auto aboutTheDirectory(const std::string& dir, Read read) -> decltype(read()) {
@@ -517,6 +532,7 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
   const std::string& dir = o.resume;
   thin_ice::RunSummary summary;
   thin_ice::Checkpoint checkpoint;
+  std::string run_hash;  // the scenario hash of the run so far (before any override switched on here)
   const thin_ice::Scenario scenario = aboutTheDirectory(dir, [&] {
     summary = thin_ice::readRunSummary(dir);
     if (summary.status == "unhealthy") {
@@ -525,7 +541,9 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
     std::string warning;
     thin_ice::Scenario loaded = thin_ice::loadRunScenario(dir, o.accept_changed_scenario, warning);
     if (!warning.empty()) std::fprintf(stderr, "thin_ice_run: warning: %s\n", warning.c_str());
+    run_hash = loaded.hash;
     if (!o.overrides.empty()) {  // switched on from here: after the run's own, so they win
+      for (const std::string& set : o.overrides) checkSwitchable(set, loaded.source);
       std::vector<std::string> overrides = loaded.overrides;
       overrides.insert(overrides.end(), o.overrides.begin(), o.overrides.end());
       loaded = thin_ice::loadScenario(loaded.source, overrides);
@@ -545,8 +563,12 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
   auto sim = std::make_unique<Simulation>(scenario, o.backend);  // no device: exit status 1
   aboutTheDirectory(dir, [&] {
     // A changed scenario file changed its hash too; loadRunScenario has already said so. Overrides
-    // switched on here change it by design.
-    thin_ice::restoreCheckpoint(*sim, checkpoint, o.accept_changed_scenario || !o.overrides.empty());
+    // switched on here change it by design, so the checkpoint is held against the run's own.
+    if (!o.accept_changed_scenario && checkpoint.scenario_hash != run_hash) {
+      throw ResumeError(dir + "/checkpoint.bin is of scenario hash " + checkpoint.scenario_hash +
+                        ", the run's (summary.json) is " + run_hash);
+    }
+    thin_ice::restoreCheckpoint(*sim, checkpoint, true);
     o.output_interval = summary.output_interval;
 
     // The history so far, which must end where the checkpoint is.
