@@ -506,6 +506,28 @@ TEST_F(ScenarioFileTest, BadOverrides) {
   EXPECT_NE(unknown.find("allowed:"), std::string::npos) << unknown;
 }
 
+TEST(OverrideKey, NamesTheKeyAsTheParserReadsIt) {
+  EXPECT_EQ(overrideKey("ice.plate_bending=true", "f.yaml"), "ice.plate_bending");
+  EXPECT_EQ(overrideKey(" sheet . jitter = 0.2", "f.yaml"), "sheet.jitter");  // spaces, as applied
+  EXPECT_EQ(overrideKey("numerics.threads=2", "f.yaml"), "numerics.threads");
+  auto message = [](const std::string& text) {
+    try {
+      overrideKey(text, "f.yaml");
+    } catch (const ScenarioError& e) {
+      return std::string(e.what());
+    }
+    return std::string("no ScenarioError");
+  };
+  const std::string no_value = message("ice.plate_bending");
+  EXPECT_NE(no_value.find("f.yaml: override 'ice.plate_bending': expected section.key=value"), std::string::npos)
+      << no_value;
+  const std::string unknown = message("ice.plate_bendin=true");
+  EXPECT_NE(unknown.find("unknown key 'plate_bendin'"), std::string::npos) << unknown;
+  const std::string section = message("icee.thickness=1");
+  EXPECT_NE(section.find("f.yaml: override 'icee.thickness=1': unknown section 'icee'"), std::string::npos)
+      << section;
+}
+
 TEST_F(ScenarioFileTest, NonexistentFile) {
   const std::string path = (dir_ / "no-such-scenario.yaml").string();
   const std::string message = errorOf(path);
