@@ -175,7 +175,7 @@ __global__ void contactForces(int capacity, RunScalars* run, ModelConstants c, c
   const Vec2* wi = world + (size_t)i * kV;
   const Vec2* wj = world + (size_t)j * kV;
   const int ni = vertex_count[i], nj = vertex_count[j];
-  const double gap = kSeparationGapFraction * (radius[i] + radius[j]);
+  const double gap = c.separation_gap_fraction * (radius[i] + radius[j]);
   if (edgeSeparates(wi, ni, wj, nj, separating_edge[p], gap)) {
     touching[p] = 0;
     reference[p] = 0.0;

@@ -356,7 +356,7 @@ class CpuBackend final : public Backend {
       const int ni = model_.vertex_count[i], nj = model_.vertex_count[j];
       // Apart by more than the clip's rounding along the edge that kept them apart last time: the
       // clip would give no overlap, so the pair is apart (pair_separation.hpp).
-      const double gap = kSeparationGapFraction * (model_.radius[i] + model_.radius[j]);
+      const double gap = model_.constants.separation_gap_fraction * (model_.radius[i] + model_.radius[j]);
       int& separating_edge = contact_separating_edge_[p];
       if (edgeSeparates(wi, ni, wj, nj, separating_edge, gap)) {
         contact_touching_[p] = 0;

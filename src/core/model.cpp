@@ -4,6 +4,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "thin_ice_sim/physics/pair_separation.hpp"
 #include "thin_ice_sim/physics/sheet_plate.hpp"
 #include "thin_ice_sim/scenario.hpp"
 
@@ -54,6 +55,7 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
   c.plate_bond_stiffness = ice.plate_bending ? plateBondStiffness(ice.youngs_modulus, ice.poisson_ratio, h) : 0.0;
   c.curvature_sheet_only =
       ice.curvature_failure && ice.curvature_failure_scope == CurvatureFailureScope::kSheet;
+  c.separation_gap_fraction = kSeparationGapFraction;
   c.water = {p.water.density,       p.water.gravity,        h, p.water.linear_drag,
              p.water.quadratic_drag, p.water.vertical_linear_drag, p.water.vertical_quadratic_drag};
   // The structure's friction is integrated at the sub-step dt/n (cell_forces.hpp).

@@ -32,7 +32,8 @@ namespace thin_ice {
 constexpr int kNoSeparatingEdge = -1;
 
 /// The gap the contact loops ask of a separating edge, as a fraction of r_i + r_j [-]: at least
-/// 2^16 steps of the clip's grid (above), 0.07 mm for two 0.2 m cells.
+/// 2^16 steps of the clip's grid (above), 0.07 mm for two 0.2 m cells. buildModel puts it in
+/// ModelConstants::separation_gap_fraction, which the loops read (a test sets it infinite).
 constexpr double kSeparationGapFraction = 1.0 / 4096.0;
 
 namespace pair_separation_detail {
