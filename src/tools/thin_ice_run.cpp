@@ -488,18 +488,21 @@ struct ResumeError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// The keys --set may switch at a resumption: the laws of the ice and the water, the friction of
-/// the rigid planes, and the thread count. Not the mesh, the masses or the floating level
-/// (thickness, densities), the geometry or the stiffness of the boundaries, the pusher's speed (the
-/// checkpoint holds it), the time stepping (the rows are counted in steps from t = 0) or the
-/// calibration factor and the structure's width (the statistics of the whole history use them).
+/// The keys --set may switch at a resumption: the laws of the ice, the water and the rigid planes
+/// (stiffness, friction), the friction's regularisation, and the thread count; a value that makes
+/// the time step unstable is refused as for a fresh run. Not the mesh, the masses or the floating
+/// level (thickness, densities), the geometry, the pusher's speed (the checkpoint holds it), the
+/// time stepping (the rows are counted in steps from t = 0), or the calibration factor and the
+/// structure's width (the statistics of the whole history use them).
 const std::set<std::string> kSwitchableKeys = {
     "ice.flexural_strength", "ice.compressive_strength", "ice.youngs_modulus", "ice.vertical_modulus",
     "ice.poisson_ratio", "ice.smoothing_exponent_h", "ice.smoothing_exponent_v", "ice.compression_coupling",
     "ice.vertical_stress", "ice.curvature_failure", "ice.curvature_failure_scope", "ice.plate_bending",
     "ice.vertical_slip_friction", "ice.friction_ice_ice", "ice.contact_damping_ratio", "ice.bond_damping_ratio",
     "water.linear_drag", "water.quadratic_drag", "water.vertical_linear_drag", "water.vertical_quadratic_drag",
-    "structure.friction", "channel.friction", "bottom.friction", "pusher.friction", "numerics.threads"};
+    "structure.friction", "structure.stiffness", "channel.friction", "channel.stiffness", "bottom.friction",
+    "bottom.stiffness", "pusher.friction", "pusher.stiffness", "numerics.friction_regularisation",
+    "numerics.friction_viscous_limit", "numerics.threads"};
 
 /// Refuses an override that --resume cannot switch (ResumeError names it and what is allowed).
 void checkSwitchable(const std::string& set, const std::string& scenario_file) {
@@ -558,17 +561,17 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
       throw ResumeError(checkpoint_path + " is at step " + std::to_string(checkpoint.state.steps) +
                         " but summary.json says the run ended at step " + std::to_string(summary.steps));
     }
+    // A changed scenario file changed its hash too; loadRunScenario has already said so. Overrides
+    // switched on here change it by design, so the checkpoint is held against the run's own.
+    if (!o.accept_changed_scenario && checkpoint.scenario_hash != run_hash) {
+      throw ResumeError(checkpoint_path + " is of scenario hash " + checkpoint.scenario_hash +
+                        ", the run's (summary.json) is " + run_hash);
+    }
     return loaded;
   });
   auto sim = std::make_unique<Simulation>(scenario, o.backend);  // no device: exit status 1
   aboutTheDirectory(dir, [&] {
-    // A changed scenario file changed its hash too; loadRunScenario has already said so. Overrides
-    // switched on here change it by design, so the checkpoint is held against the run's own.
-    if (!o.accept_changed_scenario && checkpoint.scenario_hash != run_hash) {
-      throw ResumeError(dir + "/checkpoint.bin is of scenario hash " + checkpoint.scenario_hash +
-                        ", the run's (summary.json) is " + run_hash);
-    }
-    thin_ice::restoreCheckpoint(*sim, checkpoint, true);
+    thin_ice::restoreCheckpoint(*sim, checkpoint, true);  // its hash checked above
     o.output_interval = summary.output_interval;
 
     // The history so far, which must end where the checkpoint is.

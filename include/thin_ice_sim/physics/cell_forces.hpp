@@ -29,6 +29,7 @@
 #include "thin_ice_sim/physics/host_device.hpp"
 #include "thin_ice_sim/physics/scalar.hpp"
 #include "thin_ice_sim/physics/integrate.hpp"
+#include "thin_ice_sim/physics/pair_separation.hpp"
 #include "thin_ice_sim/physics/plane_contact.hpp"
 #include "thin_ice_sim/physics/water.hpp"
 
@@ -69,8 +70,9 @@ struct ModelConstants {
   double search_margin;            ///< [m] a pair is a candidate when |c_i - c_j| <= r_i + r_j + this
   double plate_bond_stiffness;     ///< D' [N m] of ice.plate_bending (sheet_plate.hpp); 0: off
   bool curvature_sheet_only;       ///< ice.curvature_failure_scope: sheet (sheet_curvature.hpp)
-  double separation_gap_fraction;  ///< [-] a remembered separating edge skips a pair's clip while it keeps the
-                                   ///< polygons this x (r_i + r_j) apart (pair_separation.hpp); infinite: never
+  /// [-] a remembered separating edge skips a pair's clip while it keeps the polygons this x
+  /// (r_i + r_j) apart (pair_separation.hpp); infinite: never. Never 0, even in a default Model.
+  double separation_gap_fraction = kSeparationGapFraction;
 };
 
 /// A cell faster than this has blown up [m/s] (the pusher moves at centimetres per second).
