@@ -13,11 +13,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <random>
 #include <string>
 #include <vector>
 
 #include "cpu_backend.hpp"
+#include "free_cells.hpp"
 #include "thin_ice_sim/backend.hpp"
 #include "thin_ice_sim/built_backends.hpp"
 #include "thin_ice_sim/model.hpp"
@@ -78,22 +78,8 @@ class GpuParity : public ::testing::Test {
 
 TEST_F(GpuParity, FreeCellsCollidingAgreeAfter50Steps) {
   Model model = stripModel();
-  model.bond_i.clear();
-  model.bond_j.clear();
-  model.bond_rest.clear();
-  std::mt19937 random(7);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  int moved = 0;
-  for (CellMotion& m : model.initial) {
-    m.x += 1e-3 * unit(random);
-    m.y += 1e-3 * unit(random);
-    m.yaw += 0.02 * unit(random);
-    m.vx = 0.2 * unit(random);
-    m.vy = 0.2 * unit(random);
-    m.wz = 1.0 * unit(random);
-    ++moved;
-  }
-  ASSERT_GT(moved, 10);
+  testing::jostleFreeCells(model, 7);
+  ASSERT_GT(model.initial.size(), 10u);
   expectSameStates(model, 50, 1e-9);
 }
 

@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <limits>
 #include <map>
-#include <random>
 #include <utility>
 #include <memory>
 #include <string>
@@ -20,6 +19,7 @@
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/simulation.hpp"
 #include "every_backend.hpp"
+#include "free_cells.hpp"
 
 namespace thin_ice {
 namespace {
@@ -321,19 +321,7 @@ TEST_P(EveryBackend, SkippingTheClipOfPairsKeptApartChangesNoBit) {
   // cells and loads, bit for bit.
   const Scenario s = shortStrip(1);
   Model jostled = buildModel(s.params, generateIceSheet(s.params.sheet), s.source);
-  jostled.bond_i.clear();
-  jostled.bond_j.clear();
-  jostled.bond_rest.clear();
-  std::mt19937 random(11);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0);
-  for (CellMotion& m : jostled.initial) {
-    m.x += 1e-3 * unit(random);
-    m.y += 1e-3 * unit(random);
-    m.yaw += 0.02 * unit(random);
-    m.vx = 0.2 * unit(random);
-    m.vy = 0.2 * unit(random);
-    m.wz = 1.0 * unit(random);
-  }
+  testing::jostleFreeCells(jostled, 11);
   const Model breaking = buildModel(s.params, generateIceSheet(s.params.sheet), s.source);
   for (const auto& [model, steps] : {std::pair<const Model*, long>{&jostled, 400}, {&breaking, 18000}}) {
     ASSERT_GT(model->constants.separation_gap_fraction, 0.0);
