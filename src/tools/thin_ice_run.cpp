@@ -15,7 +15,7 @@
 // the summary's wall time is the sum of the segments. --snapshots N then spreads N snapshots over
 // the new segment, the last at its end. --set with --resume switches a law on from the resumption
 // (e.g. ice.plate_bending=true): the override joins the run's, and the summary's overrides_from_m
-// says from which L it holds. Only the keys of kSwitchableKeys are taken there.
+// says from which L it holds. Only the keys of kSwitchableKeys (resume_switch.hpp) are taken there.
 // Exit status: 0 done; 1 I/O or backend failure; 2 bad arguments or scenario, or a run directory
 // that cannot be resumed (nothing written); 3 the simulation became unhealthy (rows up to then and
 // the summary are kept; a resumed run is left as it was and the segment's rows go to
@@ -45,6 +45,7 @@
 #include <string>
 #include <vector>
 
+#include "resume_switch.hpp"
 #include "thin_ice_sim/built_backends.hpp"
 #include "thin_ice_sim/checkpoint.hpp"
 #include "thin_ice_sim/load_statistics.hpp"
@@ -488,32 +489,6 @@ struct ResumeError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// The keys --set may switch at a resumption: the laws of the ice, the water and the rigid planes
-/// (stiffness, friction), the friction's regularisation, and the thread count; a value that makes
-/// the time step unstable is refused as for a fresh run. Not the mesh, the masses or the floating
-/// level (thickness, densities), the geometry, the pusher's speed (the checkpoint holds it), the
-/// time stepping (the rows are counted in steps from t = 0), or the calibration factor and the
-/// structure's width (the statistics of the whole history use them).
-const std::set<std::string> kSwitchableKeys = {
-    "ice.flexural_strength", "ice.compressive_strength", "ice.youngs_modulus", "ice.vertical_modulus",
-    "ice.poisson_ratio", "ice.smoothing_exponent_h", "ice.smoothing_exponent_v", "ice.compression_coupling",
-    "ice.vertical_stress", "ice.curvature_failure", "ice.curvature_failure_scope", "ice.plate_bending",
-    "ice.vertical_slip_friction", "ice.friction_ice_ice", "ice.contact_damping_ratio", "ice.bond_damping_ratio",
-    "water.linear_drag", "water.quadratic_drag", "water.vertical_linear_drag", "water.vertical_quadratic_drag",
-    "structure.friction", "structure.stiffness", "channel.friction", "channel.stiffness", "bottom.friction",
-    "bottom.stiffness", "pusher.friction", "pusher.stiffness", "numerics.friction_regularisation",
-    "numerics.friction_viscous_limit", "numerics.threads"};
-
-/// Refuses an override that --resume cannot switch (ResumeError names it and what is allowed).
-void checkSwitchable(const std::string& set, const std::string& scenario_file) {
-  const std::string key = thin_ice::overrideKey(set, scenario_file);  // ScenarioError for an unknown key
-  if (kSwitchableKeys.count(key)) return;
-  std::string allowed;
-  for (const std::string& k : kSwitchableKeys) allowed += (allowed.empty() ? "" : " ") + k;
-  throw ResumeError("--set '" + set + "' with --resume: " + key + " cannot change under a run that is under way "
-                    "(its checkpoint, rows or statistics are tied to it); allowed there: " + allowed);
-}
-
 /// Runs `read` and turns what goes wrong into a ResumeError naming the directory (exit status 2).
 template <typename Read>
 auto aboutTheDirectory(const std::string& dir, Read read) -> decltype(read()) {
@@ -546,7 +521,10 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
     if (!warning.empty()) std::fprintf(stderr, "thin_ice_run: warning: %s\n", warning.c_str());
     run_hash = loaded.hash;
     if (!o.overrides.empty()) {  // switched on from here: after the run's own, so they win
-      for (const std::string& set : o.overrides) checkSwitchable(set, loaded.source);
+      for (const std::string& set : o.overrides) {
+        const std::string why = thin_ice_tools::whyNotSwitchable(set, loaded.source);
+        if (!why.empty()) throw ResumeError(why);
+      }
       std::vector<std::string> overrides = loaded.overrides;
       overrides.insert(overrides.end(), o.overrides.begin(), o.overrides.end());
       loaded = thin_ice::loadScenario(loaded.source, overrides);
