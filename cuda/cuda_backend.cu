@@ -176,13 +176,12 @@ __global__ void contactForces(int capacity, RunScalars* run, ModelConstants c, c
   const Vec2* wj = world + (size_t)j * kV;
   const int ni = vertex_count[i], nj = vertex_count[j];
   const double gap = c.separation_gap_fraction * (radius[i] + radius[j]);
-  if (edgeSeparates(wi, ni, wj, nj, separating_edge[p], gap)) {
+  PolygonOverlap overlap;
+  if (!clipUnlessApart(wi, ni, wj, nj, gap, separating_edge[p], overlap)) {
     touching[p] = 0;
     reference[p] = 0.0;
     return;
   }
-  const PolygonOverlap overlap = intersectConvexPolygons(wi, ni, wj, nj);
-  separating_edge[p] = overlap.area > 0.0 ? kNoSeparatingEdge : findSeparatingEdge(wi, ni, wj, nj, gap);
   const BodyState body_i = bodyOf(motion[i], mass[i], inertia[i]), body_j = bodyOf(motion[j], mass[j], inertia[j]);
   const PairForce f = demContactForce(overlap, body_i, body_j, c.contact, reference[p]);
   load[p] = contactLoad(f, body_i.centroid, body_j.centroid);

@@ -357,14 +357,12 @@ class CpuBackend final : public Backend {
       // Apart by more than the clip's rounding along the edge that kept them apart last time: the
       // clip would give no overlap, so the pair is apart (pair_separation.hpp).
       const double gap = model_.constants.separation_gap_fraction * (model_.radius[i] + model_.radius[j]);
-      int& separating_edge = contact_separating_edge_[p];
-      if (edgeSeparates(wi, ni, wj, nj, separating_edge, gap)) {
+      PolygonOverlap overlap;
+      if (!clipUnlessApart(wi, ni, wj, nj, gap, contact_separating_edge_[p], overlap)) {
         contact_touching_[p] = 0;
         contact_reference_[p] = 0.0;
         continue;
       }
-      const PolygonOverlap overlap = intersectConvexPolygons(wi, ni, wj, nj);
-      separating_edge = overlap.area > 0.0 ? kNoSeparatingEdge : findSeparatingEdge(wi, ni, wj, nj, gap);
       const BodyState body_i = body(i), body_j = body(j);
       const PairForce f = demContactForce(overlap, body_i, body_j, model_.constants.contact, contact_reference_[p]);
       contact_load_[p] = contactLoad(f, body_i.centroid, body_j.centroid);

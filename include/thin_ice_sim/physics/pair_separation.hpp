@@ -24,6 +24,7 @@
 #pragma once
 
 #include "thin_ice_sim/physics/host_device.hpp"
+#include "thin_ice_sim/physics/polygon_clip.hpp"
 #include "thin_ice_sim/physics/vec2.hpp"
 
 namespace thin_ice {
@@ -70,6 +71,18 @@ TIS_HD int findSeparatingEdge(const Vec2* a, int na, const Vec2* b, int nb, doub
     if (edgeSeparates(a, na, b, nb, edge, gap)) return edge;
   }
   return kNoSeparatingEdge;
+}
+
+/// The contact loops' use of the above (both backends): false, without clipping, while `edge`
+/// (the pair's remembered edge) still separates a and b by more than `gap` [m]: the pair is apart.
+/// Otherwise true, with the clip's overlap (Eq. 1) in `overlap` and `edge` set to one that
+/// separates the pair when it is apart (kNoSeparatingEdge when it overlaps or none is far enough).
+TIS_HD bool clipUnlessApart(const Vec2* a, int na, const Vec2* b, int nb, double gap, int& edge,
+                            PolygonOverlap& overlap) {
+  if (edgeSeparates(a, na, b, nb, edge, gap)) return false;
+  overlap = intersectConvexPolygons(a, na, b, nb);
+  edge = overlap.area > 0.0 ? kNoSeparatingEdge : findSeparatingEdge(a, na, b, nb, gap);
+  return true;
 }
 
 }  // namespace thin_ice
