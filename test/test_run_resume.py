@@ -121,6 +121,10 @@ def main():
                  (["--resume", split, "--until-time", "1", "--set", "structure.calibration_factor=0.5"],
                   "structure.calibration_factor cannot"),
                  (["--resume", split, "--until-time", "1", "--set", "ice.nonsense=1"], "unknown key 'nonsense'"),
+                 # a law that may switch, but whose value the run's time step cannot hold: the message
+                 # must not leave a smaller time step as the only way out
+                 (["--resume", split, "--until-time", "1", "--set", "ice.youngs_modulus=1e13"],
+                  "A run under way keeps its numerics.time_step"),
                  (["--resume", corrupt, "--until-time", "1"], "truncated"),
                  (["--resume", no_checkpoint, "--until-time", "1"], "has no checkpoint.bin"),
                  (["--resume", elsewhere, "--until-time", "1"], "relative to the directory the run was started from"),
@@ -170,7 +174,7 @@ def main():
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("OK: resumed runs identical to the run in one go (from the second row boundary after a short row); "
-          "an override switched on at a resumption; fifteen bad requests refused with exit status 2")
+          "an override switched on at a resumption; sixteen bad requests refused with exit status 2")
 
 
 if __name__ == "__main__":

@@ -547,7 +547,20 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
     }
     return loaded;
   });
-  auto sim = std::make_unique<Simulation>(scenario, o.backend);  // no device: exit status 1
+  std::unique_ptr<Simulation> sim;
+  try {
+    sim = std::make_unique<Simulation>(scenario, o.backend);  // no device: exit status 1
+  } catch (const thin_ice::ScenarioError& e) {
+    // The model refuses a switch that makes the run's time step unstable (a stiffer E, say), and
+    // its message offers a smaller numerics.time_step, which a run under way cannot take.
+    if (o.overrides.empty()) throw;
+    std::string switched;
+    for (const std::string& set : o.overrides) switched += (switched.empty() ? "'" : ", '") + set + "'";
+    throw ResumeError("--set " + switched + " with --resume " + dir + ": " + e.what() +
+                      ". A run under way keeps its numerics.time_step and numerics.structure_substeps (its rows "
+                      "count steps from t = 0): switch to a value the run's time step holds, or start a new run "
+                      "with this --set");
+  }
   aboutTheDirectory(dir, [&] {
     thin_ice::restoreCheckpoint(*sim, checkpoint, true);  // its hash checked above
     o.output_interval = summary.output_interval;
