@@ -5,8 +5,8 @@ one stopped between rows (t = 0.41 s) writes the same rows again from the second
 the first failure, which starts phase 1, is found whether it lies before or after the resumption;
 an override given with --resume holds from the resumption on (rows before it unchanged, after it
 changed, the summary saying from which L) and stays through a later resumption; a directory that
-cannot be resumed, or an override of a key a run under way cannot change, is refused with exit
-status 2 and the directory left as it was.
+cannot be resumed, an override of a key a run under way cannot change, or a false bottom raised
+through the ice over it, is refused with exit status 2 and the directory left as it was.
 
     test_run_resume.py THIN_ICE_RUN SOURCE_DIR
 """
@@ -30,8 +30,8 @@ def main():
     scenario = strip_scenario(source) + ["--output-interval", "0.02"]
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
-        whole, split, off_grid, early, switched = (os.path.join(tmp, d)
-                                                   for d in ("whole", "split", "off_grid", "early", "switched"))
+        whole, split, off_grid, early, switched, floating = (
+            os.path.join(tmp, d) for d in ("whole", "split", "off_grid", "early", "switched", "floating"))
         for args in (scenario + ["--until-time", "0.8", "--out", whole],
                      scenario + ["--until-time", "0.4", "--out", split],
                      ["--resume", split, "--until-time", "0.8"],
@@ -42,7 +42,9 @@ def main():
                      # twice the ice-ice friction from 0.4 s (L = 0.08 m) on, kept through a second resumption
                      scenario + ["--until-time", "0.4", "--out", switched],
                      ["--resume", switched, "--set", "ice.friction_ice_ice=0.6", "--until-time", "0.8"],
-                     ["--resume", switched, "--until-time", "0.9"]):
+                     ["--resume", switched, "--until-time", "0.9"],
+                     # the strip afloat over the false bottom (by 0.8 s it has ridden up the face)
+                     scenario + ["--until-time", "0.25", "--out", floating]):
             done = run(tool, args)
             if done.returncode != 0:
                 sys.exit(f"FAIL: {' '.join(args)}: exit status {done.returncode}: {done.stderr.strip()}")
@@ -109,7 +111,7 @@ def main():
         summary["scenario"]["file"] = "config/scenarios/not_here.yaml"
         with open(os.path.join(elsewhere, "summary.json"), "w") as f:
             json.dump(summary, f, indent=2)
-        before = {d: contents(d) for d in (split, corrupt, no_checkpoint, elsewhere)}
+        before = {d: contents(d) for d in (split, corrupt, no_checkpoint, elsewhere, floating)}
         cases = [(["--resume", split, "--until-time", "0.8"], "already at t = 0.8"),
                  (["--resume", split, "--until-time", "1", "--out", tmp], "give none of them"),
                  # what a run under way cannot change: the mesh (spaces around the key too), the time
@@ -125,6 +127,10 @@ def main():
                  # must not leave a smaller time step as the only way out
                  (["--resume", split, "--until-time", "1", "--set", "ice.youngs_modulus=1e13"],
                   "A run under way keeps its numerics.time_step"),
+                 # the false bottom may move down under the ice, not up through the floating cells
+                 # over it (their slab bottoms float at about z = -0.04 m)
+                 (["--resume", floating, "--until-time", "1", "--set", "bottom.depth=0.01"],
+                  "a bottom may move down under a run, not up through its ice"),
                  (["--resume", corrupt, "--until-time", "1"], "truncated"),
                  (["--resume", no_checkpoint, "--until-time", "1"], "has no checkpoint.bin"),
                  (["--resume", elsewhere, "--until-time", "1"], "relative to the directory the run was started from"),
@@ -140,6 +146,12 @@ def main():
             if done.returncode != 2 or expected not in done.stderr:
                 failures.append(f"{' '.join(args[-4:])}: exit status {done.returncode}, stderr {done.stderr.strip()!r}; "
                                 f"expected 2 and {expected!r}")
+        # ... and a deeper bottom is taken
+        deeper = os.path.join(tmp, "deeper")
+        shutil.copytree(floating, deeper)
+        done = run(tool, ["--resume", deeper, "--until-time", "0.3", "--set", "bottom.depth=0.5"])
+        if done.returncode != 0:
+            failures.append(f"--set bottom.depth=0.5 with --resume: exit status {done.returncode}: {done.stderr.strip()}")
         if os.path.exists(os.path.join(tmp, "huge")):
             failures.append("a refused run created its --out directory")
         for d, files in before.items():
@@ -174,7 +186,7 @@ def main():
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("OK: resumed runs identical to the run in one go (from the second row boundary after a short row); "
-          "an override switched on at a resumption; sixteen bad requests refused with exit status 2")
+          "an override switched on at a resumption; seventeen bad requests refused; a deeper false bottom taken with exit status 2")
 
 
 if __name__ == "__main__":

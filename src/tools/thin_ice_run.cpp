@@ -563,6 +563,8 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
   }
   aboutTheDirectory(dir, [&] {
     thin_ice::restoreCheckpoint(*sim, checkpoint, true);  // its hash checked above
+    const std::string cut = thin_ice_tools::whyBottomCutsIce(*sim, o.overrides, scenario.source);
+    if (!cut.empty()) throw ResumeError(cut);
     o.output_interval = summary.output_interval;
 
     // The history so far, which must end where the checkpoint is.
