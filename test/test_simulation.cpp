@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <map>
 #include <utility>
@@ -335,8 +336,13 @@ TEST_P(EveryBackend, SkippingTheClipOfPairsKeptApartChangesNoBit) {
                   a.vz == b.vz && a.wz == b.wz)
           << "cell " << k << " after " << steps << " steps";
     }
-    EXPECT_EQ(skipping.loads.horizontal_raw, clipping.loads.horizontal_raw);
-    EXPECT_EQ(skipping.loads.vertical_raw, clipping.loads.vertical_raw);
+    // The GPU sums the structure's load over its cells with atomics, in an order that changes from
+    // run to run (cuda_backend.cu), so there the totals agree to their last bits only.
+    const double sum_order = GetParam() == BackendKind::kCpu ? 0.0 : 1e-12;  // relative
+    EXPECT_NEAR(skipping.loads.horizontal_raw, clipping.loads.horizontal_raw,
+                sum_order * std::fabs(clipping.loads.horizontal_raw));
+    EXPECT_NEAR(skipping.loads.vertical_raw, clipping.loads.vertical_raw,
+                sum_order * std::fabs(clipping.loads.vertical_raw));
     EXPECT_EQ(skipping.loads.contacts, clipping.loads.contacts);
     EXPECT_EQ(skipping.loads.broken_bonds, clipping.loads.broken_bonds);
     EXPECT_GT(skipping.loads.contacts, 0) << "no contact: nothing was tested";
