@@ -228,6 +228,14 @@ void DeviceContactList::download(std::vector<int>& i, std::vector<int>& j, std::
   TIS_CUDA_CHECK(cudaMemcpy(reference.data(), reference_area_.get(), count_ * sizeof(double), cudaMemcpyDeviceToHost));
 }
 
+long DeviceContactList::pairsKeptApart() const {
+  std::vector<int> edge(count_);
+  if (count_ > 0) {
+    TIS_CUDA_CHECK(cudaMemcpy(edge.data(), separating_edge_.get(), count_ * sizeof(int), cudaMemcpyDeviceToHost));
+  }
+  return static_cast<long>(edge.size()) - std::count(edge.begin(), edge.end(), kNoSeparatingEdge);
+}
+
 bool DeviceContactList::rebuild(const CandidateInputs& in, cudaStream_t stream) {
   const int n = cells_;
   const int grid = blocksFor(n);

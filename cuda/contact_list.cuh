@@ -49,6 +49,8 @@ class DeviceContactList {
   void download(std::vector<int>& i, std::vector<int>& j, std::vector<double>& reference) const;
 
   int count() const { return count_; }
+  /// Pairs of the list that hold a separating edge (a diagnostic: copies the edges to the host).
+  long pairsKeptApart() const;
   int capacity() const { return static_cast<int>(pair_i_.size()); }
   const int* pairI() const { return pair_i_.get(); }
   const int* pairJ() const { return pair_j_.get(); }

@@ -372,6 +372,11 @@ class CudaBackend final : public Backend {
     return makeCellSnapshots(model_, motion_.download(), bond_state_.download());
   }
 
+  long pairsKeptApart() const override {
+    TIS_CUDA_CHECK(cudaStreamSynchronize(stream_));
+    return contacts_.pairsKeptApart();
+  }
+
   BackendState saveState() const override {
     TIS_CUDA_CHECK(cudaStreamSynchronize(stream_));
     BackendState s;

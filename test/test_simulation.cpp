@@ -304,6 +304,7 @@ TEST_P(EveryBackend, WithScopeSheetTheCurvatureCriterionChecksTheIntactSheetOnly
 struct EndState {
   std::vector<CellSnapshot> cells;
   LoadSample loads;
+  long pairs_kept_apart;  ///< contact pairs holding a separating edge at the end
 };
 
 EndState stepped(BackendKind kind, const Model& model, long steps) {
@@ -311,7 +312,7 @@ EndState stepped(BackendKind kind, const Model& model, long steps) {
       kind == BackendKind::kCpu ? makeCpuBackend(model, 1) : gpuBackendProvider()->make(model);
   backend->step(steps, model.initial_pusher_velocity);
   EXPECT_EQ(backend->healthError(), "");
-  return {backend->cells(), backend->loads()};
+  return {backend->cells(), backend->loads(), backend->pairsKeptApart()};
 }
 
 TEST_P(EveryBackend, SkippingTheClipOfPairsKeptApartChangesNoBit) {
@@ -346,6 +347,10 @@ TEST_P(EveryBackend, SkippingTheClipOfPairsKeptApartChangesNoBit) {
     EXPECT_EQ(skipping.loads.contacts, clipping.loads.contacts);
     EXPECT_EQ(skipping.loads.broken_bonds, clipping.loads.broken_bonds);
     EXPECT_GT(skipping.loads.contacts, 0) << "no contact: nothing was tested";
+    // The skip was there to be taken: pairs hold an edge that kept them apart, and none do when no
+    // edge can be far enough (else the comparison above would hold with the skip never used).
+    EXPECT_GT(skipping.pairs_kept_apart, 0) << "after " << steps << " steps";
+    EXPECT_EQ(clipping.pairs_kept_apart, 0);
   }
 }
 

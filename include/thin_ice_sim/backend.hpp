@@ -61,6 +61,10 @@ class Backend {
   /// rebuilds the contact list and carries S_ref over from the pairs of `state`, as any rebuild
   /// does; loads() is empty until then.
   virtual void restoreState(const BackendState& state) = 0;
+  /// Contact pairs that hold a remembered separating edge now: the next step skips their polygon
+  /// clip while that edge still keeps them apart (physics/pair_separation.hpp). A diagnostic, for
+  /// the tests that check the skip is used and carried through a rebuild.
+  virtual long pairsKeptApart() const = 0;
 };
 
 /// Cell snapshots from a backend's state: cell k is in the intact sheet while any of its bonds

@@ -130,6 +130,11 @@ class CpuBackend final : public Backend {
     return makeCellSnapshots(model_, motion_, bond_state_);
   }
 
+  long pairsKeptApart() const override {
+    return static_cast<long>(contact_separating_edge_.size()) -
+           std::count(contact_separating_edge_.begin(), contact_separating_edge_.end(), kNoSeparatingEdge);
+  }
+
   BackendState saveState() const override {
     BackendState s;
     s.time = time_;
