@@ -3,7 +3,9 @@
 docs/validation/RUN/ (summary.json and load.png of each thin_ice_run): a table in the layout of
 the paper's Table 6 with this project's numbers beside the experiment's, the seed spread, the
 resolution checks and the load plots. Only what the runs measured is reported; a series without
-a run is listed as not run.
+a run is listed as not run. Two hand-written files in the runs folder are taken in as they are:
+misses.md (why each missed target is missed, and what was tried) under the targets' table, and
+calibration.md (the calibration notes, newest first) before the load histories.
 
   validation_report.py --runs docs/validation --out docs/validation.md
 """
@@ -565,6 +567,11 @@ def main():
              "and in their own section further down." if archived else "", "",
              ]
     lines += targets_at_a_glance(runs)
+    # Why each target missed above is missed, and what was tried: written by hand beside the runs.
+    misses = os.path.join(a.runs, "misses.md")
+    if os.path.exists(misses):
+        with open(misses) as f:
+            lines += [f.read().rstrip(), ""]
     lines += ["## Table 6 layout: model against experiment", ""]
     lines += table6(runs)
     missing = [sid for sid in SERIES if sid not in runs]
