@@ -10,6 +10,7 @@ through the ice over it, is refused with exit status 2 and the directory left as
 
     test_run_resume.py THIN_ICE_RUN SOURCE_DIR
 """
+import csv
 import json
 import os
 import re
@@ -18,7 +19,7 @@ import subprocess
 import sys
 import tempfile
 
-from quick_strip import strip_scenario
+from quick_strip import refusal_problem, strip_scenario
 
 
 def run(tool, args):
@@ -30,8 +31,8 @@ def main():
     scenario = strip_scenario(source) + ["--output-interval", "0.02"]
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
-        whole, split, off_grid, early, switched, floating = (
-            os.path.join(tmp, d) for d in ("whole", "split", "off_grid", "early", "switched", "floating"))
+        whole, split, off_grid, early, switched, floating, no_bottom = (
+            os.path.join(tmp, d) for d in ("whole", "split", "off_grid", "early", "switched", "floating", "no_bottom"))
         for args in (scenario + ["--until-time", "0.8", "--out", whole],
                      scenario + ["--until-time", "0.4", "--out", split],
                      ["--resume", split, "--until-time", "0.8"],
@@ -44,7 +45,8 @@ def main():
                      ["--resume", switched, "--set", "ice.friction_ice_ice=0.6", "--until-time", "0.8"],
                      ["--resume", switched, "--until-time", "0.9"],
                      # the strip afloat over the false bottom (by 0.8 s it has ridden up the face)
-                     scenario + ["--until-time", "0.25", "--out", floating]):
+                     scenario + ["--until-time", "0.25", "--snapshots", "1", "--out", floating],
+                     scenario + ["--set", "bottom.enabled=false", "--until-time", "0.05", "--out", no_bottom]):
             done = run(tool, args)
             if done.returncode != 0:
                 sys.exit(f"FAIL: {' '.join(args)}: exit status {done.returncode}: {done.stderr.strip()}")
@@ -111,7 +113,7 @@ def main():
         summary["scenario"]["file"] = "config/scenarios/not_here.yaml"
         with open(os.path.join(elsewhere, "summary.json"), "w") as f:
             json.dump(summary, f, indent=2)
-        before = {d: contents(d) for d in (split, corrupt, no_checkpoint, elsewhere, floating)}
+        before = {d: contents(d) for d in (split, corrupt, no_checkpoint, elsewhere, floating, no_bottom)}
         cases = [(["--resume", split, "--until-time", "0.8"], "already at t = 0.8"),
                  (["--resume", split, "--until-time", "1", "--out", tmp], "give none of them"),
                  # what a run under way cannot change: the mesh (spaces around the key too), the time
@@ -123,14 +125,16 @@ def main():
                  (["--resume", split, "--until-time", "1", "--set", "structure.calibration_factor=0.5"],
                   "structure.calibration_factor cannot"),
                  (["--resume", split, "--until-time", "1", "--set", "ice.nonsense=1"], "unknown key 'nonsense'"),
-                 # a law that may switch, but whose value the run's time step cannot hold: the message
-                 # must not leave a smaller time step as the only way out
+                 # a law that may switch, but whose value the run's time step cannot hold (checked
+                 # again below: the message must not offer a smaller time step)
                  (["--resume", split, "--until-time", "1", "--set", "ice.youngs_modulus=1e13"],
-                  "A run under way keeps its numerics.time_step"),
+                  "a run under way keeps its numerics.time_step"),
                  # the false bottom may move down under the ice, not up through the floating cells
-                 # over it (their slab bottoms float at about z = -0.04 m)
+                 # over it (their slab bottoms float at about z = -0.04 m), and not where there is none
                  (["--resume", floating, "--until-time", "1", "--set", "bottom.depth=0.01"],
-                  "a bottom may move down under a run, not up through its ice"),
+                  "a bottom may move down under a run, not up through the ice over it"),
+                 (["--resume", no_bottom, "--until-time", "1", "--set", "bottom.depth=0.5"],
+                  "the run has no false bottom (bottom.enabled: false)"),
                  (["--resume", corrupt, "--until-time", "1"], "truncated"),
                  (["--resume", no_checkpoint, "--until-time", "1"], "has no checkpoint.bin"),
                  (["--resume", elsewhere, "--until-time", "1"], "relative to the directory the run was started from"),
@@ -146,12 +150,35 @@ def main():
             if done.returncode != 2 or expected not in done.stderr:
                 failures.append(f"{' '.join(args[-4:])}: exit status {done.returncode}, stderr {done.stderr.strip()!r}; "
                                 f"expected 2 and {expected!r}")
-        # ... and a deeper bottom is taken
+        # The time-step refusal: one line, and no smaller time step or more sub-steps offered.
+        stiff = ["--resume", split, "--until-time", "1", "--set", "ice.youngs_modulus=1e13"]
+        problem = refusal_problem([tool] + stiff, "ice.youngs_modulus=1e13")
+        stderr = run(tool, stiff).stderr
+        if problem or "allowed: <=" in stderr or "structure_substeps >=" in stderr:
+            failures.append(f"the unstable switch's refusal: {problem or stderr.strip()!r}")
+        # The bottom's refusal counts the cells the bottom acts on (polygon past its start, x = 0.6 m)
+        # whose slab bottom is under the new plane, counted here from the run's last snapshot.
+        with open(os.path.join(floating, "snapshots", "index.csv")) as f:
+            last = list(csv.DictReader(f))[-1]["file"]
+        h = 0.051  # [m] quick.yaml's ice.thickness
+        under = 0
+        with open(os.path.join(floating, "snapshots", last)) as f:
+            for cell in csv.DictReader(f):
+                xs = [float(v) for v in cell["polygon_xy_m"].split()[0::2]]
+                under += max(xs) > 0.6 and float(cell["z_m"]) - h / 2 < -0.01 - 1e-3 * h
+        shallow = run(tool, ["--resume", floating, "--until-time", "1", "--set", "bottom.depth=0.01"]).stderr
+        if not (0 < under < 50) or f": {under} cells over the false bottom" not in shallow:
+            failures.append(f"the bottom's refusal should count {under} of the strip's 50 cells: {shallow.strip()!r}")
+        # ... and a deeper bottom is taken, and said so in summary.json.
         deeper = os.path.join(tmp, "deeper")
         shutil.copytree(floating, deeper)
         done = run(tool, ["--resume", deeper, "--until-time", "0.3", "--set", "bottom.depth=0.5"])
         if done.returncode != 0:
             failures.append(f"--set bottom.depth=0.5 with --resume: exit status {done.returncode}: {done.stderr.strip()}")
+        else:
+            sd = json.load(open(os.path.join(deeper, "summary.json")))
+            if sd["false_bottom"]["depth_m"] != 0.5 or sd["overrides_from_m"] != [{"set": "bottom.depth=0.5", "from_m": sd["resumed_at_m"][-1]}]:
+                failures.append(f"the deeper bottom's summary: {sd['false_bottom']}, {sd['overrides_from_m']}")
         if os.path.exists(os.path.join(tmp, "huge")):
             failures.append("a refused run created its --out directory")
         for d, files in before.items():
@@ -186,7 +213,7 @@ def main():
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("OK: resumed runs identical to the run in one go (from the second row boundary after a short row); "
-          "an override switched on at a resumption; seventeen bad requests refused; a deeper false bottom taken with exit status 2")
+          "an override switched on at a resumption; eighteen bad requests refused with exit status 2; a deeper false bottom taken")
 
 
 if __name__ == "__main__":

@@ -63,7 +63,8 @@ class Backend {
   virtual void restoreState(const BackendState& state) = 0;
   /// Contact pairs that hold a remembered separating edge now: the next step skips their polygon
   /// clip while that edge still keeps them apart (physics/pair_separation.hpp). A diagnostic, for
-  /// the tests that check the skip is used and carried through a rebuild.
+  /// the test that checks edges are found and kept (not that a kept edge is read, nor that it is
+  /// carried through a rebuild: bit-identity with every pair clipped covers those).
   virtual long pairsKeptApart() const = 0;
 };
 

@@ -2,11 +2,14 @@
 #pragma once
 
 #include <algorithm>
+#include <cmath>
 #include <set>
 #include <sstream>
 #include <string>
 #include <vector>
 
+#include "thin_ice_sim/ice_sheet.hpp"
+#include "thin_ice_sim/model.hpp"
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/simulation.hpp"
 
@@ -16,7 +19,7 @@ namespace thin_ice_tools {
 /// (stiffness, friction), the friction's regularisation, the thread count, and the depth of the
 /// false bottom (not in the paper, so the one piece of geometry whose effect on a grown pile is
 /// worth testing; a depth that would cut ice already under it is refused, whyBottomCutsIce). A
-/// value that makes the time step unstable is refused as for a fresh run. Not the mesh, the masses
+/// value that makes the time step unstable is refused (whyTheStepCannotHold). Not the mesh, the masses
 /// or the floating level (thickness, densities), the rest of the geometry, the pusher's speed (the
 /// checkpoint holds it), the time stepping (the rows are counted in steps from t = 0), or the
 /// calibration factor and the structure's width (the statistics of the whole history use them).
@@ -42,33 +45,90 @@ inline std::string whyNotSwitchable(const std::string& set, const std::string& s
 }
 
 /// Why the resumed simulation `sim` cannot take the false bottom's depth that `sets` switch to ("" when
-/// it can, or when none of them names bottom.depth): a bottom moved up through ice already below it
-/// would start the segment with cells deep inside a penalty plane. Counts the cells over the bottom
-/// (within one cell size of where it starts, so as not to miss one that reaches over its edge) whose
-/// slab bottom z - h/2 [m] lies below the new plane.
+/// it can, or when none of them names bottom.depth). A bottom moved up through ice already below it
+/// would start the segment with cells deep inside a penalty plane, and one that is not there
+/// (bottom.enabled false) would take the switch without effect. The cells counted are those the
+/// bottom acts on (physics/cell_forces.hpp: a polygon reaching past where it starts) whose slab
+/// bottom z - h/2 [m] lies below the new plane by more than 1e-3 h: ice resting on the bottom sinks
+/// into its penalty plane by far less, so the run's own depth is always taken.
 inline std::string whyBottomCutsIce(const thin_ice::Simulation& sim, const std::vector<std::string>& sets,
                                     const std::string& scenario_file) {
   std::string depth_set;
   for (const std::string& set : sets) {
     if (thin_ice::overrideKey(set, scenario_file) == "bottom.depth") depth_set = set;
   }
+  if (depth_set.empty()) return "";
   const thin_ice::Params& p = sim.params();
-  if (depth_set.empty() || !p.bottom.enabled) return "";
-  const double bottom_z = -p.bottom.depth;                                          // [m]
-  const double reach_x = p.structure.toe_x - p.bottom.distance_from_structure - p.sheet.cell_size;  // [m]
-  const double half_h = 0.5 * p.ice.thickness;                                      // [m]
+  if (!p.bottom.enabled) {
+    return "--set '" + depth_set + "' with --resume: the run has no false bottom (bottom.enabled: false), so its "
+           "depth would change nothing; allowed: bottom.depth only where bottom.enabled is true";
+  }
+  const double bottom_z = -p.bottom.depth;                                               // [m]
+  const double bottom_x_start = p.structure.toe_x - p.bottom.distance_from_structure;    // [m]
+  const double half_h = 0.5 * p.ice.thickness;                                           // [m]
+  const double resting = 1e-3 * p.ice.thickness;  // [m] deeper than ice resting on the bottom sinks
   long below = 0;
   double deepest = bottom_z;  // [m] the lowest slab bottom found over the bottom
-  for (const thin_ice::CellSnapshot& cell : sim.cells()) {
-    if (cell.x < reach_x) continue;
-    deepest = std::min(deepest, cell.z - half_h);
-    if (cell.z - half_h < bottom_z) ++below;
+  const std::vector<thin_ice::CellSnapshot> cells = sim.cells();
+  for (int k = 0; k < static_cast<int>(cells.size()); ++k) {
+    double reach = -1e300;  // [m] the polygon's largest x
+    for (const thin_ice::Vec2& v : sim.cellPolygon(k, cells[k])) reach = std::max(reach, v.x);
+    if (!(reach > bottom_x_start)) continue;
+    const double slab_bottom = cells[k].z - half_h;
+    if (slab_bottom < bottom_z - resting) {
+      ++below;
+      deepest = std::min(deepest, slab_bottom);
+    }
   }
   if (below == 0) return "";
+  // The least depth allowed, rounded up to 0.1 mm so that the value printed is taken as it reads.
+  const double least = std::ceil(-deepest * 1e4) * 1e-4;  // [m]
   std::ostringstream msg;
   msg << "--set '" << depth_set << "' with --resume: " << below << " cells over the false bottom already reach "
       << "below z = " << bottom_z << " m (the lowest slab bottom at z = " << deepest << " m); a bottom may move "
-      << "down under a run, not up through its ice; allowed: bottom.depth >= " << -deepest << " m";
+      << "down under a run, not up through the ice over it; allowed: bottom.depth >= " << least << " m";
+  return msg.str();
+}
+
+/// The refusal of `sets`, switched at the resumption of the run in `dir`, when with them the run's
+/// time step (or its structure sub-step) is no longer stable: the model's own message offers a
+/// smaller numerics.time_step or more sub-steps, which a run under way cannot take. This one gives
+/// the stable step with the switch, against the run's, and how much softer the stiffest spring
+/// would have to be (a spring's critical step goes as 1/sqrt(stiffness)). `scenario` holds the
+/// run's parameters with `sets` applied; `model_error` is what buildModel said.
+inline std::string whyTheStepCannotHold(const thin_ice::Scenario& scenario, const std::vector<std::string>& sets,
+                                        const std::string& dir, const std::string& model_error) {
+  std::string switched;
+  for (const std::string& set : sets) switched += (switched.empty() ? "'" : ", '") + set + "'";
+  const std::string head = "--set " + switched + " with --resume " + dir + ": ";
+  const std::string keeps = "a run under way keeps its numerics.time_step and numerics.structure_substeps (its "
+                            "rows count steps from t = 0)";
+  const thin_ice::NumericsParams& n = scenario.params.numerics;
+  thin_ice::Params unchecked = scenario.params;
+  unchecked.numerics.critical_step_safety = 1e300;  // only to read the critical steps off the model
+  double critical = 0.0, structure_critical = 0.0;  // [s]
+  try {
+    const thin_ice::Model model =
+        thin_ice::buildModel(unchecked, thin_ice::generateIceSheet(unchecked.sheet), scenario.source);
+    critical = model.critical_time_step;
+    structure_critical = model.structure_critical_time_step;
+  } catch (const std::exception&) {
+    return head + model_error + "; " + keeps;
+  }
+  // The binding one: dt against the ice's springs, or dt/n against the structure's too.
+  const double step = n.time_step, substep = n.time_step / n.structure_substeps;      // [s]
+  const double stable = n.critical_step_safety * critical;                            // [s]
+  const double stable_substep = n.critical_step_safety * structure_critical;          // [s]
+  const bool ice_binds = stable / step <= stable_substep / substep;
+  const double ratio = ice_binds ? stable / step : stable_substep / substep;          // < 1
+  std::ostringstream msg;
+  msg.precision(3);
+  msg << head << "with it the stable " << (ice_binds ? "time step" : "structure sub-step") << " (critical_step_safety "
+      << n.critical_step_safety << " x the critical step " << (ice_binds ? critical : structure_critical)
+      << " s of the stiffest spring" << (ice_binds ? "" : ", the structure's included") << ") is "
+      << (ice_binds ? stable : stable_substep) << " s, under the run's " << (ice_binds ? step : substep) << " s, and "
+      << keeps << "; allowed: values under which that spring has at most " << ratio * ratio
+      << " of the stiffness these give it (a critical step goes as 1/sqrt(stiffness)), or a new run with this --set";
   return msg.str();
 }
 

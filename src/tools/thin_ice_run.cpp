@@ -15,7 +15,9 @@
 // the summary's wall time is the sum of the segments. --snapshots N then spreads N snapshots over
 // the new segment, the last at its end. --set with --resume switches a law on from the resumption
 // (e.g. ice.plate_bending=true): the override joins the run's, and the summary's overrides_from_m
-// says from which L it holds. Only the keys of kSwitchableKeys (resume_switch.hpp) are taken there.
+// says from which L it holds. Only the keys of kSwitchableKeys (resume_switch.hpp) are taken there,
+// and not a value under which the run's time step is unstable, nor a false bottom raised through
+// the ice over it.
 // Exit status: 0 done; 1 I/O or backend failure; 2 bad arguments or scenario, or a run directory
 // that cannot be resumed (nothing written); 3 the simulation became unhealthy (rows up to then and
 // the summary are kept; a resumed run is left as it was and the segment's rows go to
@@ -554,12 +556,7 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
     // The model refuses a switch that makes the run's time step unstable (a stiffer E, say), and
     // its message offers a smaller numerics.time_step, which a run under way cannot take.
     if (o.overrides.empty()) throw;
-    std::string switched;
-    for (const std::string& set : o.overrides) switched += (switched.empty() ? "'" : ", '") + set + "'";
-    throw ResumeError("--set " + switched + " with --resume " + dir + ": " + e.what() +
-                      ". A run under way keeps its numerics.time_step and numerics.structure_substeps (its rows "
-                      "count steps from t = 0): switch to a value the run's time step holds, or start a new run "
-                      "with this --set");
+    throw ResumeError(thin_ice_tools::whyTheStepCannotHold(scenario, o.overrides, dir, e.what()));
   }
   aboutTheDirectory(dir, [&] {
     thin_ice::restoreCheckpoint(*sim, checkpoint, true);  // its hash checked above
