@@ -355,6 +355,14 @@ def verdict(model, reference, tolerance):
     return "met" if abs(model - reference) <= tolerance * abs(reference) else "missed"
 
 
+def hand_written(path):
+    """The lines of a hand-written Markdown file kept beside the runs, as it is ([] when there is none)."""
+    if not os.path.exists(path):
+        return []
+    with open(path) as f:
+        return [f.read().rstrip(), ""]
+
+
 def targets_at_a_glance(runs):
     """Per ice type, the targets of issue #6 judged on the longest run of that type (the others of
     the type are shorter: their loads are of an earlier phase), and weak against medium from those
@@ -568,10 +576,7 @@ def main():
              ]
     lines += targets_at_a_glance(runs)
     # Why each target missed above is missed, and what was tried: written by hand beside the runs.
-    misses = os.path.join(a.runs, "misses.md")
-    if os.path.exists(misses):
-        with open(misses) as f:
-            lines += [f.read().rstrip(), ""]
+    lines += hand_written(os.path.join(a.runs, "misses.md"))
     lines += ["## Table 6 layout: model against experiment", ""]
     lines += table6(runs)
     missing = [sid for sid in SERIES if sid not in runs]
@@ -622,10 +627,7 @@ def main():
         lines += table6(archived) + [""]
         lines += seeds_and_resolution(archive, archived, archived_histories, archive_rel, level="###")
 
-    calibration = os.path.join(a.runs, "calibration.md")
-    if os.path.exists(calibration):
-        with open(calibration) as f:
-            lines += [f.read().rstrip(), ""]
+    lines += hand_written(os.path.join(a.runs, "calibration.md"))
 
     lines += ["## Load histories", ""]
     for root, root_rel, group, label in ((a.runs, rel, runs, ""), (archive, archive_rel, archived, f" ({ARCHIVE})")):

@@ -1,4 +1,5 @@
-// Which overrides thin_ice_run --resume DIR --set ... may switch on under a run that is under way.
+// Which overrides thin_ice_run --resume DIR --set ... may switch on under a run that is under way,
+// and the refusals of values that run cannot take (an unstable step, a bottom raised through its ice).
 #pragma once
 
 #include <algorithm>
@@ -18,7 +19,7 @@ namespace thin_ice_tools {
 /// The keys --set may switch at a resumption: the laws of the ice, the water and the rigid planes
 /// (stiffness, friction), the friction's regularisation, the thread count, and the depth of the
 /// false bottom (not in the paper, so the one piece of geometry whose effect on a grown pile is
-/// worth testing; a depth that would cut ice already under it is refused, whyBottomCutsIce). A
+/// worth testing; a depth that would cut the ice already over the bottom is refused, whyBottomCutsIce). A
 /// value that makes the time step unstable is refused (whyTheStepCannotHold). Not the mesh, the masses
 /// or the floating level (thickness, densities), the rest of the geometry, the pusher's speed (the
 /// checkpoint holds it), the time stepping (the rows are counted in steps from t = 0), or the
