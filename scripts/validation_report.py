@@ -3,9 +3,11 @@
 docs/validation/RUN/ (summary.json and load.png of each thin_ice_run): a table in the layout of
 the paper's Table 6 with this project's numbers beside the experiment's, the seed spread, the
 resolution checks and the load plots. Only what the runs measured is reported; a series without
-a run is listed as not run. Two hand-written files in the runs folder are taken in as they are:
-misses.md (why each missed target is missed, and what was tried) under the targets' table, and
-calibration.md (the calibration notes, newest first) before the load histories.
+a run is listed as not run. Three hand-written files in the runs folder are taken in as they are:
+misses.md (why each missed target is missed, and what was tried) under the targets' table,
+procedure.md (the calibration procedure: where each value comes from, which series were only
+predicted) after it, and calibration.md (the calibration notes, newest first) at the end, after
+the load histories.
 
   validation_report.py --runs docs/validation --out docs/validation.md
 """
@@ -577,6 +579,8 @@ def main():
     lines += targets_at_a_glance(runs)
     # Why each target missed above is missed, and what was tried: written by hand beside the runs.
     lines += hand_written(os.path.join(a.runs, "misses.md"))
+    # Where each value of the scenarios comes from, and which series were only predicted.
+    lines += hand_written(os.path.join(a.runs, "procedure.md"))
     lines += ["## Table 6 layout: model against experiment", ""]
     lines += table6(runs)
     missing = [sid for sid in SERIES if sid not in runs]
@@ -627,13 +631,14 @@ def main():
         lines += table6(archived) + [""]
         lines += seeds_and_resolution(archive, archived, archived_histories, archive_rel, level="###")
 
-    lines += hand_written(os.path.join(a.runs, "calibration.md"))
-
     lines += ["## Load histories", ""]
     for root, root_rel, group, label in ((a.runs, rel, runs, ""), (archive, archive_rel, archived, f" ({ARCHIVE})")):
         for name in sorted(group):
             if os.path.exists(os.path.join(root, name, "load.png")):
                 lines += [f"### {name}{label}", "", f"![{name}{label}]({root_rel}/{name}/load.png)", ""]
+
+    # The dated notes come last: they are the evidence, read after the results they led to.
+    lines += hand_written(os.path.join(a.runs, "calibration.md"))
     path = a.out
     with open(path + ".partial", "w") as f:
         f.write("\n".join(lines))

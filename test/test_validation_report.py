@@ -46,6 +46,11 @@ def main():
         # The hand-written account of the misses goes right under the table it explains.
         with open(os.path.join(runs, "misses.md"), "w") as f:
             f.write("### Why each miss\n\nthe account\n")
+        # The procedure follows it, before the tables; the dated notes come last, after the plots.
+        with open(os.path.join(runs, "procedure.md"), "w") as f:
+            f.write("## Calibration procedure\n\nthe procedure\n")
+        with open(os.path.join(runs, "calibration.md"), "w") as f:
+            f.write("## Calibration notes, newest first\n\nthe notes\n")
         out = os.path.join(tmp, "validation.md")
         done = subprocess.run([sys.executable, script, "--runs", runs, "--out", out],
                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=120)
@@ -64,8 +69,11 @@ def main():
     ]
     missing = [line for line in expected if line not in text.splitlines()]
     account = text.find("### Why each miss")
-    if not (text.find("Weak above medium in steady state:") < account < text.find("## Table 6")):
-        missing.append("misses.md between 'Targets at a glance' and 'Table 6'")
+    procedure = text.find("## Calibration procedure")
+    if not (text.find("Weak above medium in steady state:") < account < procedure < text.find("## Table 6")):
+        missing.append("misses.md, then procedure.md, between 'Targets at a glance' and 'Table 6'")
+    if not (0 < text.find("## Load histories") < text.find("## Calibration notes, newest first")):
+        missing.append("calibration.md after 'Load histories'")
     if missing:
         section = text[text.find("## Targets at a glance"):text.find("## Table 6")]
         sys.exit("FAIL: missing lines " + repr(missing) + " in:\n" + section)
@@ -89,7 +97,7 @@ def main():
             if open(out).read() != "the old report":
                 sys.exit(f"FAIL: --runs {runs} replaced the report already there")
     print("OK: validation_report judges each ice type's longest run against the tolerances as worked out by hand, "
-          "puts misses.md under that table, and refuses a missing, empty or broken --runs folder without touching the report")
+          "puts misses.md under that table and procedure.md after it, the dated notes last, and refuses a missing, empty or broken --runs folder without touching the report")
 
 
 if __name__ == "__main__":
