@@ -8,16 +8,22 @@ import subprocess
 import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BUILDS = (".ws/devel/lib/thin_ice_sim/thin_ice_analyse", ".ws/build_core_only/bin/thin_ice_analyse")
+BUILDS = (".ws/devel/lib/thin_ice_sim", ".ws/build_core_only/bin")  # catkin's, then plain CMake's
+
+
+def default_tool(caller, name):
+    """The command-line tool NAME (thin_ice_analyse, thin_ice_bond_offset) of the catkin build, else
+    of the plain CMake build, under .ws."""
+    for folder in BUILDS:
+        path = os.path.join(ROOT, folder, name)
+        if os.access(path, os.X_OK):
+            return path
+    sys.exit(f"{caller}: no {name} under {' or '.join(BUILDS)}: build first, or give --tool")
 
 
 def default_analyse_tool(caller):
     """thin_ice_analyse of the catkin build, else of the plain CMake build, under .ws."""
-    for relative in BUILDS:
-        path = os.path.join(ROOT, relative)
-        if os.access(path, os.X_OK):
-            return path
-    sys.exit(f"{caller}: no thin_ice_analyse under {' or '.join(BUILDS)}: build first, or give --tool")
+    return default_tool(caller, "thin_ice_analyse")
 
 
 def analyse(tool, run_dir):

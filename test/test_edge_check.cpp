@@ -58,6 +58,33 @@ TEST(EdgeCheck, StrongBondBreaksWhenTheBendingStressReachesSigmaF) {
   EXPECT_NEAR(cap.offset / 0.05, 0.0168085, 1e-6);
 }
 
+TEST(EdgeCheck, TheLargestBendingStressOfAHeightStepIsAtTheTopOfTheSmoothing) {
+  // sigma_v = 3 K_v k_v dz d / (L_e h^2) with K_v = (1 - u)^n, dz = u h: for k_v = 1e6 N/m,
+  // h = 0.05 m and L_e = d = 0.2 m, sigma_v = 3e6 0.05 / 0.0025 u (1 - u)^n = 6e7 u (1 - u)^n Pa.
+  // n = 1/2: the top is at u = 2/3, 6e7 (2/3) sqrt(1/3) = 2.3094011e7 Pa.
+  // n = 2: at u = 1/3, 6e7 (1/3) (4/9) = 8.8888889e6 Pa.
+  const auto root = thin_ice::largestVerticalStress(verticalBond(1e6), constants(0.5, 1e9));
+  EXPECT_NEAR(root.stress, 6e7 * 2.0 / (3.0 * std::sqrt(3.0)), 1.0);
+  EXPECT_NEAR(root.offset, 0.05 * 2.0 / 3.0, 1e-8);
+  const auto square = thin_ice::largestVerticalStress(verticalBond(1e6), constants(2.0, 1e9));
+  EXPECT_NEAR(square.stress, 6e7 * 4.0 / 27.0, 1.0);
+  EXPECT_NEAR(square.offset, 0.05 / 3.0, 1e-8);
+  // The stress at a step is the law's: u = 0.2 with n = 2 gives 6e7 0.2 0.64 = 7.68e6 Pa.
+  EXPECT_NEAR(thin_ice::bondUnderOffset(verticalBond(1e6), constants(2.0, 1e9), 0.01).sigma_v, 7.68e6, 1e-3);
+}
+
+TEST(EdgeCheck, TheBondNearestALengthIsTheFirstOfTheNearest) {
+  thin_ice::Model model;
+  EXPECT_EQ(thin_ice::bondNearestLength(model, 0.2), -1);
+  for (double d : {0.3, 0.17, 0.22, 0.22}) {
+    model.bond_rest.push_back(verticalBond(1e6));
+    model.bond_rest.back().distance = d;
+  }
+  EXPECT_EQ(thin_ice::bondNearestLength(model, 0.2), 2);  // 0.22 is 0.02 away, 0.17 is 0.03
+  EXPECT_EQ(thin_ice::bondNearestLength(model, 0.1), 1);
+  EXPECT_EQ(thin_ice::bondNearestLength(model, 1.0), 0);
+}
+
 TEST(EdgeCheck, FloatingPlateOfMediumIce) {
   // M-2 ice: E = 328 MPa, h = 0.051 m, nu = 0.3, sigma_f = 108 kPa, rho_w g = 9810 N/m^3.
   // l = (328e6 * 0.051^3 / (12 * 0.91 * 9810))^(1/4) = 0.7983 m;

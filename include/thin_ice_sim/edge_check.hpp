@@ -23,9 +23,27 @@ struct BondVerticalCapacity {
 /// bisected, so that a bond that fails within the first step is not under-read.
 BondVerticalCapacity bondVerticalCapacity(const BondRest& rest, const BondConstants& constants, int samples = 4000);
 
-/// |F_v| [N] of the bond at a pure vertical offset dz [m] (no horizontal strain, at rest); `breaks`
-/// says whether Eq. (13) or the tear-through is met there.
+/// The bond law (rmibBondForce, Eqs. 11-13) for the bond at a pure vertical offset dz [m] of its
+/// two cells: no horizontal strain, both at rest and unturned.
+BondForce bondUnderOffset(const BondRest& rest, const BondConstants& constants, double dz);
+
+/// |F_v| [N] of the bond at a pure vertical offset dz [m] (bondUnderOffset); `breaks` says whether
+/// Eq. (13) or the tear-through is met there.
 double bondVerticalForce(const BondRest& rest, const BondConstants& constants, double dz, bool& breaks);
+
+/// The largest sigma_v of Eq. (13) a bond reaches under a vertical offset alone, 0 < dz < h: the
+/// smoothing K_v of Eq. (6) falls as the offset grows, so sigma_v has a top inside the range.
+struct LargestVerticalStress {
+  double stress = 0.0;  ///< [Pa] sigma_v at its top
+  double offset = 0.0;  ///< [m] dz there
+};
+/// Sampled at `samples` offsets through bondUnderOffset, then refined by golden-section search
+/// about the best sample (sigma_v rises and falls once for every reading and exponent n >= 0).
+LargestVerticalStress largestVerticalStress(const BondRest& rest, const BondConstants& constants, int samples = 4000);
+
+/// Index of the model's bond whose centroid distance d is nearest `distance` [m] (the lowest index
+/// among equals); -1 where the model has no bond.
+int bondNearestLength(const Model& model, double distance);
 
 /// The floating semi-infinite plate of SPEC-NOTES: the characteristic length
 /// l = [E h^3 / (12 (1 - nu^2) rho_w g)]^(1/4) [m] and the edge line load at first failure

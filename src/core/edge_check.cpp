@@ -1,11 +1,12 @@
 #include "thin_ice_sim/edge_check.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace thin_ice {
 
-double bondVerticalForce(const BondRest& rest, const BondConstants& constants, double dz, bool& breaks) {
+BondForce bondUnderOffset(const BondRest& rest, const BondConstants& constants, double dz) {
   // Cell i at the origin, cell j placed so that the two anchors coincide (no horizontal strain);
   // both at rest and unturned, so only the vertical spring of Eq. (12) is loaded.
   BodyState i{};
@@ -13,9 +14,56 @@ double bondVerticalForce(const BondRest& rest, const BondConstants& constants, d
   j.centroid = rest.anchor_i - rest.anchor_j;
   j.z = dz;
   const Vec2 unturned{1.0, 0.0};
-  const BondForce f = rmibBondForce(rest, i, unturned, j, unturned, constants);
+  return rmibBondForce(rest, i, unturned, j, unturned, constants);
+}
+
+double bondVerticalForce(const BondRest& rest, const BondConstants& constants, double dz, bool& breaks) {
+  const BondForce f = bondUnderOffset(rest, constants, dz);
   breaks = f.breaks;
   return std::fabs(f.fz_on_j);
+}
+
+LargestVerticalStress largestVerticalStress(const BondRest& rest, const BondConstants& constants, int samples) {
+  if (samples < 2) throw std::invalid_argument("largestVerticalStress: samples must be >= 2");
+  const double h = constants.thickness;
+  const auto stress = [&](double dz) { return bondUnderOffset(rest, constants, dz).sigma_v; };
+  int best = 1;
+  double best_stress = stress(h / samples);
+  for (int s = 2; s < samples; ++s) {
+    const double value = stress(h * s / samples);
+    if (value > best_stress) {
+      best_stress = value;
+      best = s;
+    }
+  }
+  // The top lies within one sample of the best one: golden-section search there.
+  const double ratio = 0.5 * (std::sqrt(5.0) - 1.0);
+  double low = h * (best - 1) / samples, high = h * std::min(best + 1, samples) / samples;
+  for (int k = 0; k < 80; ++k) {
+    const double left = high - ratio * (high - low), right = low + ratio * (high - low);
+    if (stress(left) < stress(right)) {
+      low = left;
+    } else {
+      high = right;
+    }
+  }
+  const double refined = 0.5 * (low + high);
+  const double refined_stress = stress(refined);
+  LargestVerticalStress top;
+  top.stress = refined_stress >= best_stress ? refined_stress : best_stress;
+  top.offset = refined_stress >= best_stress ? refined : h * best / samples;
+  return top;
+}
+
+int bondNearestLength(const Model& model, double distance) {
+  int nearest = -1;
+  for (size_t b = 0; b < model.bond_rest.size(); ++b) {
+    if (nearest < 0 || std::fabs(model.bond_rest[b].distance - distance) <
+                           std::fabs(model.bond_rest[nearest].distance - distance)) {
+      nearest = static_cast<int>(b);
+    }
+  }
+  return nearest;
 }
 
 BondVerticalCapacity bondVerticalCapacity(const BondRest& rest, const BondConstants& constants, int samples) {
