@@ -210,10 +210,34 @@ def main():
             if done.returncode != 3 or kept != before or "unhealthy_segment.csv" not in after[blown]:
                 failures.append(f"a resumed segment that blew up: exit status {done.returncode} (expected 3), "
                                 f"files changed: {[f for d in after for f in after[d] if before[d].get(f) != after[d][f]]}")
+        # A scenario file stiffened under --accept-changed-scenario past what the run's time step
+        # holds is refused as that, with or without a harmless switch given beside it, and offers
+        # no smaller time step.
+        stiff_copy = os.path.join(tmp, "quick_stiff.yaml")
+        shutil.copy(os.path.join(source, "config/scenarios/quick.yaml"), stiff_copy)
+        stiffened = os.path.join(tmp, "stiffened")
+        done = run(tool, ["--scenario", stiff_copy] + strip_scenario(source)[2:] + ["--until-time", "0.05", "--out", stiffened])
+        if done.returncode != 0:
+            failures.append(f"the run to stiffen later: exit status {done.returncode}: {done.stderr.strip()}")
+        else:
+            with open(stiff_copy) as f:
+                text = f.read()
+            with open(stiff_copy, "w") as f:
+                f.write(re.sub(r"(?m)^  youngs_modulus: \S+", "  youngs_modulus: 1e13", text))
+            before = contents(stiffened)
+            for extra in ([], ["--set", "ice.friction_ice_ice=0.4"]):
+                args = ["--resume", stiffened, "--accept-changed-scenario", "--until-time", "0.1"] + extra
+                done = run(tool, args)
+                last = (done.stderr.strip().splitlines() or [""])[-1]
+                if (done.returncode != 2 or not last.startswith("thin_ice_run: the run's scenario as it reads now (")
+                        or "friction_ice_ice" in last or "allowed: <=" in last or contents(stiffened) != before):
+                    failures.append(f"the stiffened file, {' '.join(extra) or 'no --set'}: exit status "
+                                    f"{done.returncode}, stderr {done.stderr.strip()!r}")
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("OK: resumed runs identical to the run in one go (from the second row boundary after a short row); "
-          "an override switched on at a resumption; eighteen bad requests refused with exit status 2; a deeper false bottom taken")
+          "an override switched on at a resumption; eighteen bad requests refused with exit status 2, and a scenario file "
+          "stiffened past the run's time step refused as that; a deeper false bottom taken")
 
 
 if __name__ == "__main__":

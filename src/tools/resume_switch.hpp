@@ -91,17 +91,37 @@ inline std::string whyBottomCutsIce(const thin_ice::Simulation& sim, const std::
   return msg.str();
 }
 
-/// The refusal of `sets`, switched at the resumption of the run in `dir`, when with them the run's
-/// time step (or its structure sub-step) is no longer stable: the model's own message offers a
-/// smaller numerics.time_step or more sub-steps, which a run under way cannot take. This one gives
-/// the stable step with the switch, against the run's, and how much softer the stiffest spring
-/// would have to be (a spring's critical step goes as 1/sqrt(stiffness)). `scenario` holds the
-/// run's parameters with `sets` applied; `model_error` is what buildModel said.
-inline std::string whyTheStepCannotHold(const thin_ice::Scenario& scenario, const std::vector<std::string>& sets,
-                                        const std::string& dir, const std::string& model_error) {
+/// Whether the model of `scenario` can be built: its time step (and structure sub-step) stable.
+inline bool modelBuilds(const thin_ice::Scenario& scenario) {
+  try {
+    thin_ice::buildModel(scenario.params, thin_ice::generateIceSheet(scenario.params.sheet), scenario.source);
+    return true;
+  } catch (const thin_ice::ScenarioError&) {
+    return false;
+  }
+}
+
+/// What made the resumed run's model refuse its time step, for the refusal below: the switches
+/// `sets` given with --resume, or, where the run's scenario as it reads now is refused without them
+/// (`unswitched`: its file changed under --accept-changed-scenario, or no switch was given), that.
+inline std::string whatMadeTheStepUnstable(const thin_ice::Scenario& unswitched, const std::vector<std::string>& sets) {
+  if (sets.empty() || !modelBuilds(unswitched)) {
+    return "the run's scenario as it reads now (" + unswitched.source + ", with the run's own overrides)";
+  }
   std::string switched;
   for (const std::string& set : sets) switched += (switched.empty() ? "'" : ", '") + set + "'";
-  const std::string head = "--set " + switched + " with --resume " + dir + ": ";
+  return "--set " + switched;
+}
+
+/// The refusal of the resumption of the run in `dir` when its time step (or its structure sub-step)
+/// is no longer stable, `cause` (whatMadeTheStepUnstable) being why: the model's own message offers
+/// a smaller numerics.time_step or more sub-steps, which a run under way cannot take. This one gives
+/// the stable step now, against the run's, and how much softer the stiffest spring would have to be
+/// (a spring's critical step goes as 1/sqrt(stiffness)). `scenario` holds the parameters the
+/// resumed run would have; `model_error` is what buildModel said.
+inline std::string whyTheStepCannotHold(const thin_ice::Scenario& scenario, const std::string& cause,
+                                        const std::string& dir, const std::string& model_error) {
+  const std::string head = cause + " with --resume " + dir + ": ";
   const std::string keeps = "a run under way keeps its numerics.time_step and numerics.structure_substeps (its "
                             "rows count steps from t = 0)";
   const thin_ice::NumericsParams& n = scenario.params.numerics;
@@ -129,7 +149,7 @@ inline std::string whyTheStepCannotHold(const thin_ice::Scenario& scenario, cons
       << " s of the stiffest spring" << (ice_binds ? "" : ", the structure's included") << ") is "
       << (ice_binds ? stable : stable_substep) << " s, under the run's " << (ice_binds ? step : substep) << " s, and "
       << keeps << "; allowed: values under which that spring has at most " << ratio * ratio
-      << " of the stiffness these give it (a critical step goes as 1/sqrt(stiffness)), or a new run with this --set";
+      << " of the stiffness these give it (a critical step goes as 1/sqrt(stiffness)), or a new run with these values";
   return msg.str();
 }
 

@@ -474,6 +474,7 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
   thin_ice::RunSummary summary;
   thin_ice::Checkpoint checkpoint;
   std::string run_hash;  // the scenario hash of the run so far (before any override switched on here)
+  thin_ice::Scenario unswitched;  // the run's scenario as it reads now, without the overrides given here
   const thin_ice::Scenario scenario = aboutTheDirectory(dir, [&] {
     summary = thin_ice::readRunSummary(dir);
     if (summary.status == "unhealthy") {
@@ -483,6 +484,7 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
     thin_ice::Scenario loaded = thin_ice::loadRunScenario(dir, o.accept_changed_scenario, warning);
     if (!warning.empty()) std::fprintf(stderr, "thin_ice_run: warning: %s\n", warning.c_str());
     run_hash = loaded.hash;
+    unswitched = loaded;
     if (!o.overrides.empty()) {  // switched on from here: after the run's own, so they win
       for (const std::string& set : o.overrides) {
         const std::string why = thin_ice_tools::whyNotSwitchable(set, loaded.source);
@@ -514,10 +516,11 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
   try {
     sim = std::make_unique<Simulation>(scenario, o.backend);  // no device: exit status 1
   } catch (const thin_ice::ScenarioError& e) {
-    // The model refuses a switch that makes the run's time step unstable (a stiffer E, say), and
-    // its message offers a smaller numerics.time_step, which a run under way cannot take.
-    if (o.overrides.empty()) throw;
-    throw ResumeError(thin_ice_tools::whyTheStepCannotHold(scenario, o.overrides, dir, e.what()));
+    // The model refuses a time step made unstable by a switch (a stiffer E, say) or by the scenario
+    // file changed under --accept-changed-scenario, and its message offers a smaller
+    // numerics.time_step, which a run under way cannot take.
+    throw ResumeError(thin_ice_tools::whyTheStepCannotHold(
+        scenario, thin_ice_tools::whatMadeTheStepUnstable(unswitched, o.overrides), dir, e.what()));
   }
   aboutTheDirectory(dir, [&] {
     thin_ice::restoreCheckpoint(*sim, checkpoint, true);  // its hash checked above
