@@ -31,14 +31,16 @@ BondForce bondUnderOffset(const BondRest& rest, const BondConstants& constants, 
 /// Eq. (13) or the tear-through is met there.
 double bondVerticalForce(const BondRest& rest, const BondConstants& constants, double dz, bool& breaks);
 
-/// The largest sigma_v of Eq. (13) a bond reaches under a vertical offset alone, 0 < dz < h: the
-/// smoothing K_v of Eq. (6) falls as the offset grows, so sigma_v has a top inside the range.
+/// The largest sigma_v of Eq. (13) that the bond law gives under a vertical offset alone,
+/// 0 < dz < h: the smoothing K_v of Eq. (6) falls as the offset grows, so for n > 0 sigma_v has a
+/// top inside the range. The top is the law's, whether or not the bond would hold to it: above
+/// sigma_f it breaks on the way (bondVerticalCapacity says where).
 struct LargestVerticalStress {
   double stress = 0.0;  ///< [Pa] sigma_v at its top
   double offset = 0.0;  ///< [m] dz there
 };
 /// Sampled at `samples` offsets through bondUnderOffset, then refined by golden-section search
-/// about the best sample (sigma_v rises and falls once for every reading and exponent n >= 0).
+/// about the best sample (sigma_v ~ u (1 - u)^n rises and falls once for every reading).
 LargestVerticalStress largestVerticalStress(const BondRest& rest, const BondConstants& constants, int samples = 4000);
 
 /// Index of the model's bond whose centroid distance d is nearest `distance` [m] (the lowest index

@@ -91,37 +91,45 @@ inline std::string whyBottomCutsIce(const thin_ice::Simulation& sim, const std::
   return msg.str();
 }
 
-/// Whether the model of `scenario` can be built: its time step (and structure sub-step) stable.
+/// Whether the model of `scenario` can be built (its time step and structure sub-step stable,
+/// among the model's other checks).
 inline bool modelBuilds(const thin_ice::Scenario& scenario) {
   try {
     thin_ice::buildModel(scenario.params, thin_ice::generateIceSheet(scenario.params.sheet), scenario.source);
     return true;
-  } catch (const thin_ice::ScenarioError&) {
+  } catch (const std::exception&) {
     return false;
   }
 }
 
-/// What made the resumed run's model refuse its time step, for the refusal below: the switches
-/// `sets` given with --resume, or, where the run's scenario as it reads now is refused without them
-/// (`unswitched`: its file changed under --accept-changed-scenario, or no switch was given), that.
-inline std::string whatMadeTheStepUnstable(const thin_ice::Scenario& unswitched, const std::vector<std::string>& sets) {
+/// What made a resumed run's model refuse its scenario, and the scenario to reckon the refusal on:
+/// the switches given with --resume, or, where the run's scenario as it reads now is refused
+/// without them (its file changed under --accept-changed-scenario, or no switch was given), that
+/// scenario alone, so that the figures of the refusal are the file's.
+struct RefusedScenario {
+  const thin_ice::Scenario* scenario;
+  std::string cause;  ///< the words naming it, for the head of the refusal
+};
+inline RefusedScenario whatWasRefused(const thin_ice::Scenario& unswitched, const thin_ice::Scenario& switched,
+                                      const std::vector<std::string>& sets) {
   if (sets.empty() || !modelBuilds(unswitched)) {
-    return "the run's scenario as it reads now (" + unswitched.source + ", with the run's own overrides)";
+    return {&unswitched, "the run's scenario as it reads now (" + unswitched.source +
+                             (unswitched.overrides.empty() ? "" : ", with the run's own overrides") + ")"};
   }
-  std::string switched;
-  for (const std::string& set : sets) switched += (switched.empty() ? "'" : ", '") + set + "'";
-  return "--set " + switched;
+  std::string given;
+  for (const std::string& set : sets) given += (given.empty() ? "'" : ", '") + set + "'";
+  return {&switched, "--set " + given};
 }
 
-/// The refusal of the resumption of the run in `dir` when its time step (or its structure sub-step)
-/// is no longer stable, `cause` (whatMadeTheStepUnstable) being why: the model's own message offers
-/// a smaller numerics.time_step or more sub-steps, which a run under way cannot take. This one gives
-/// the stable step now, against the run's, and how much softer the stiffest spring would have to be
-/// (a spring's critical step goes as 1/sqrt(stiffness)). `scenario` holds the parameters the
-/// resumed run would have; `model_error` is what buildModel said.
-inline std::string whyTheStepCannotHold(const thin_ice::Scenario& scenario, const std::string& cause,
-                                        const std::string& dir, const std::string& model_error) {
-  const std::string head = cause + " with --resume " + dir + ": ";
+/// The refusal of the resumption of the run in `dir` when the model of `refused` cannot hold the
+/// run's time step (or its structure sub-step); "" when its refusal is about something else (the
+/// caller then passes the model's own message on). The model's own message offers a smaller
+/// numerics.time_step or more sub-steps, which a run under way cannot take. This one gives the
+/// stable step now, against the run's, and how much softer the stiffest spring would have to be (a
+/// spring's critical step goes as 1/sqrt(stiffness)).
+inline std::string whyTheStepCannotHold(const RefusedScenario& refused, const std::string& dir) {
+  const thin_ice::Scenario& scenario = *refused.scenario;
+  const std::string head = refused.cause + " with --resume " + dir + ": ";
   const std::string keeps = "a run under way keeps its numerics.time_step and numerics.structure_substeps (its "
                             "rows count steps from t = 0)";
   const thin_ice::NumericsParams& n = scenario.params.numerics;
@@ -134,14 +142,15 @@ inline std::string whyTheStepCannotHold(const thin_ice::Scenario& scenario, cons
     critical = model.critical_time_step;
     structure_critical = model.structure_critical_time_step;
   } catch (const std::exception&) {
-    return head + model_error + "; " + keeps;
+    return "";  // refused without the time-step check as well: not the time step
   }
   // The binding one: dt against the ice's springs, or dt/n against the structure's too.
   const double step = n.time_step, substep = n.time_step / n.structure_substeps;      // [s]
   const double stable = n.critical_step_safety * critical;                            // [s]
   const double stable_substep = n.critical_step_safety * structure_critical;          // [s]
   const bool ice_binds = stable / step <= stable_substep / substep;
-  const double ratio = ice_binds ? stable / step : stable_substep / substep;          // < 1
+  const double ratio = ice_binds ? stable / step : stable_substep / substep;          // < 1 when refused
+  if (!(ratio < 1.0)) return "";  // the step holds: the refusal was about something else
   std::ostringstream msg;
   msg.precision(3);
   msg << head << "with it the stable " << (ice_binds ? "time step" : "structure sub-step") << " (critical_step_safety "

@@ -515,12 +515,14 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
   std::unique_ptr<Simulation> sim;
   try {
     sim = std::make_unique<Simulation>(scenario, o.backend);  // no device: exit status 1
-  } catch (const thin_ice::ScenarioError& e) {
+  } catch (const thin_ice::ScenarioError&) {
     // The model refuses a time step made unstable by a switch (a stiffer E, say) or by the scenario
     // file changed under --accept-changed-scenario, and its message offers a smaller
     // numerics.time_step, which a run under way cannot take.
-    throw ResumeError(thin_ice_tools::whyTheStepCannotHold(
-        scenario, thin_ice_tools::whatMadeTheStepUnstable(unswitched, o.overrides), dir, e.what()));
+    const std::string why =
+        thin_ice_tools::whyTheStepCannotHold(thin_ice_tools::whatWasRefused(unswitched, scenario, o.overrides), dir);
+    if (why.empty()) throw;  // not the time step: the model's own message says what
+    throw ResumeError(why);
   }
   aboutTheDirectory(dir, [&] {
     thin_ice::restoreCheckpoint(*sim, checkpoint, true);  // its hash checked above
