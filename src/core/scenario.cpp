@@ -7,6 +7,8 @@
 // ChannelParams, NumericsParams), plus an optional top-level `description:` text.
 //   Enums:    ice.vertical_stress: shear | bending | plate;  sheet.layout: jittered_grid | poisson_disk;
 //             ice.vertical_slip_friction: level_only | edge_face;  ice.curvature_failure_scope: all | sheet
+//             ice.failure_compression: current | strength;  ice.bond_smoothing: force | strength
+//             ice.contact_face: overlap | thickness
 //   Integers: structure.panels, sheet.lloyd_iterations, numerics.max_steps_between_rebuilds,
 //             numerics.structure_substeps,
 //             numerics.threads (signed), sheet.seed (unsigned 64 bit); decimal digits only.
@@ -133,6 +135,27 @@ VerticalSlipFrictionModel toVerticalSlipFriction(const YAML::Node& n) {
   throw BadValue(describe(n));
 }
 
+FailureCompressionModel toFailureCompression(const YAML::Node& n) {
+  const std::string& s = plainScalar(n);
+  if (s == "current") return FailureCompressionModel::kCurrent;
+  if (s == "strength") return FailureCompressionModel::kStrength;
+  throw BadValue(describe(n));
+}
+
+BondSmoothingModel toBondSmoothing(const YAML::Node& n) {
+  const std::string& s = plainScalar(n);
+  if (s == "force") return BondSmoothingModel::kForce;
+  if (s == "strength") return BondSmoothingModel::kStrength;
+  throw BadValue(describe(n));
+}
+
+ContactFaceModel toContactFace(const YAML::Node& n) {
+  const std::string& s = plainScalar(n);
+  if (s == "overlap") return ContactFaceModel::kOverlap;
+  if (s == "thickness") return ContactFaceModel::kThickness;
+  throw BadValue(describe(n));
+}
+
 CurvatureFailureScope toCurvatureFailureScope(const YAML::Node& n) {
   const std::string& s = plainScalar(n);
   if (s == "all") return CurvatureFailureScope::kAll;
@@ -201,6 +224,10 @@ const std::vector<Section>& sections() {
         number(&P::ice, &IceParams::compression_coupling, "compression_coupling", kRequired),
         field(&P::ice, &IceParams::vertical_stress, "vertical_stress", "shear, bending or plate",
               toVerticalStress, kRequired),
+        field(&P::ice, &IceParams::failure_compression, "failure_compression", "current or strength",
+              toFailureCompression, false),
+        field(&P::ice, &IceParams::bond_smoothing, "bond_smoothing", "force or strength", toBondSmoothing, false),
+        field(&P::ice, &IceParams::contact_face, "contact_face", "overlap or thickness", toContactFace, false),
         flag(&P::ice, &IceParams::curvature_failure, "curvature_failure"),
         field(&P::ice, &IceParams::curvature_failure_scope, "curvature_failure_scope", "all or sheet",
               toCurvatureFailureScope, false),

@@ -47,6 +47,12 @@ enum VerticalSlipFriction : int {
   kVerticalSlipEdgeFace = 1,
 };
 
+/// What height the horizontal force of Eq. (1) acts over (issue #31, reading b).
+enum ContactFaceReading : int {
+  kFaceOverlap = 0,    ///< the vertical overlap Z; depth min(S/L, Z); cap sigma_c Z L (this project's)
+  kFaceThickness = 1,  ///< the thickness h, as printed; depth S/L; cap sigma_c h L
+};
+
 struct ContactConstants {
   double thickness;             ///< h [m]
   double plane_modulus;         ///< 3E/(1-nu) [Pa], Eq. (1)
@@ -59,6 +65,7 @@ struct ContactConstants {
   double damping_ratio;         ///< zeta [-]
   double regularisation_speed;  ///< [m/s]
   int vertical_slip_friction;   ///< a VerticalSlipFriction: what resists vertical slip between offset cells
+  int contact_face;             ///< a ContactFaceReading: the face height of Eq. (1), Z or h
 };
 
 /// What a contact law needs of one body.
@@ -136,12 +143,15 @@ TIS_HD PairForce demContactForce(const PolygonOverlap& overlap, const BodyState&
   // Eq. (1) x h^3 with the contact face h high replaced by the vertical overlap Z of Eq. (2):
   // two slabs at different heights touch over Z, not h (equal at dz = 0); the depth is the
   // shallower of S/L and Z. Damping of stiffness k = K_n E' Z.
+  // As printed (kFaceThickness) the face is h high and the depth is S/L.
   const double overlap_z = maxOf(0.0, h - fabs(dz));
-  const double stiffness_h = k_h * c.plane_modulus * overlap_z;
-  const double depth = minOf(area / overlap.chord_length, overlap_z);
+  const bool printed_face = c.contact_face == kFaceThickness;
+  const double face = printed_face ? h : overlap_z;
+  const double stiffness_h = k_h * c.plane_modulus * face;
+  const double depth = printed_face ? area / overlap.chord_length : minOf(area / overlap.chord_length, overlap_z);
   double normal = stiffness_h * depth;
   normal -= 2.0 * c.damping_ratio * sqrt(stiffness_h * reduced_mass) * approach;
-  normal = minOf(maxOf(normal, 0.0), c.crushing_strength * overlap_z * overlap.chord_length);
+  normal = minOf(maxOf(normal, 0.0), c.crushing_strength * face * overlap.chord_length);
 
   // Eqs. (2)-(3), with damping of stiffness K_v E_v' S / h.
   const double stiffness_v = k_v * c.vertical_modulus * area / h;
