@@ -1,4 +1,6 @@
-// The runner's progress on stderr: one updating line on a terminal, one plain line per 10 % otherwise.
+// The runner's progress on stderr: one updating line on a terminal, one plain line per 10 % otherwise,
+// and at least one a minute (a heartbeat: a long segment at a low real-time factor can take hours
+// per 10 %, and a run that prints nothing cannot be told from a run that hangs).
 #pragma once
 
 #include <unistd.h>
@@ -22,9 +24,12 @@ inline std::string formatDuration(double seconds) {
   return text;
 }
 
-/// A single updating line on a terminal (every 0.5 s wall); one plain line per 10 % otherwise.
+/// A single updating line on a terminal (every 0.5 s wall); one plain line per 10 % otherwise, or
+/// after kHeartbeatSeconds of wall time without one.
 class Progress {
  public:
+  static constexpr double kHeartbeatSeconds = 60.0;  ///< [s] wall, longest silence off a terminal
+
   /// start_time [s] and start_fraction: where this segment of the run began (0, 0 unless resumed).
   Progress(double start_time, double start_fraction)
       : tty_(::isatty(STDERR_FILENO) != 0), start_time_(start_time), start_fraction_(start_fraction) {
@@ -32,7 +37,9 @@ class Progress {
   }
   void report(double fraction, const thin_ice::LoadSample& s, double wall, bool last) {
     // 1e-3: rows whose time falls a rounding short of a tenth still print it
-    const bool due = last || (tty_ ? wall - last_print_ >= 0.5 : fraction >= next_tenth_ - 1e-3);
+    const double since_print = wall - (last_print_ < 0.0 ? 0.0 : last_print_);  // [s] wall
+    const bool due = last || (tty_ ? wall - last_print_ >= 0.5
+                                   : fraction >= next_tenth_ - 1e-3 || since_print >= kHeartbeatSeconds);
     if (!due) return;
     const double rtf = wall > 0.0 ? (s.time - start_time_) / wall : 0.0;
     const double done = fraction - start_fraction_;
