@@ -96,6 +96,26 @@ TEST(Contact, VerticalForceIsEquation3) {
   EXPECT_NEAR(f.force_on_j.x, 0.6 * 9e8 / 0.7 * 0.03 * 1e-3, 1e-6 * 23142.9);
 }
 
+TEST(Contact, AsPrintedTheHorizontalForceActsOverTheThicknessWhateverTheOffset) {
+  // ice.contact_face = thickness, j 0.02 m higher (K_n = 0.6 for n = 1): Eq. (1) x h^3,
+  // F_n = 0.6 (9e8/0.7) 0.05 1e-3 = 38571.4 N (over the face 0.03 m high: 23142.9 N); F_v of
+  // Eq. (3) is unchanged, 92571.4 N. A piece lying on another (j 0.049 m higher, K_n = 0.02,
+  // Z = 1 mm, S/L = 1 mm) gets 0.02 (9e8/0.7) 0.05 1e-3 = 1285.7 N, against
+  // 0.02 (9e8/0.7) 1e-3 1e-3 = 25.7 N with the overlap.
+  ContactConstants c = iceContact();
+  c.contact_face = kFaceThickness;
+  const PairForce f = squaresOneMillimetreIn(0.02, c);
+  EXPECT_NEAR(f.force_on_j.x, 0.6 * 9e8 / 0.7 * 0.05 * 1e-3, 1e-6 * 38571.4);
+  EXPECT_NEAR(f.fz_on_j, 0.6 * 0.03 * 9e8 / 0.7 * 2e-4 / 0.05, 1e-6 * 92571.4);
+  const PairForce lying = squaresOneMillimetreIn(0.049, c);
+  EXPECT_NEAR(lying.force_on_j.x, 0.02 * 9e8 / 0.7 * 0.05 * 1e-3, 1e-6 * 1285.7);
+  const PairForce lying_on_overlap = squaresOneMillimetreIn(0.049, iceContact());
+  EXPECT_NEAR(lying_on_overlap.force_on_j.x, 0.02 * 9e8 / 0.7 * 1e-3 * 1e-3, 1e-6 * 25.7);
+  // Level cells: the two readings are one law.
+  const PairForce level = squaresOneMillimetreIn(0.0, c), level_overlap = squaresOneMillimetreIn(0.0, iceContact());
+  EXPECT_EQ(level.force_on_j.x, level_overlap.force_on_j.x);
+}
+
 TEST(Contact, HorizontalAndVerticalExponentsActApart) {
   // As above with n = 2 for K_n and n = 1 for K_v: K_n = 0.6^2 = 0.36, K_v = 0.6, so
   // F_n = 0.36 (9e8/0.7) 0.03 1e-3 = 13885.7 N and F_v = 92571.4 N as before.
@@ -404,6 +424,60 @@ TEST(Bond, TheThreeReadingsOfTheVerticalStress) {
   EXPECT_NEAR(verticalBondStress(-100.0, b, law), 1.2e5, 1e-5);
   law.vertical_stress = kVerticalPlate;
   EXPECT_NEAR(verticalBondStress(-100.0, b, law), 3.6e5, 1e-5);
+}
+
+TEST(Bond, WithTheCompressiveStrengthInEquation13TheVerticalThresholdIsConstant) {
+  // ice.failure_compression = strength: sigma_v > sigma_f - k sigma_comp whatever the bond carries.
+  // k = 0.5, sigma_comp = 130 kPa: threshold 100 - 65 = 35 kPa, with no compression at all.
+  // Shear reading, n = 1: sigma_v = K_v k_v dz / (h L_e) = (1 - dz/h) 1e4 dz / 0.01, so a bond
+  // offset by dz = 0.0375 m carries 0.25 * 1e4 * 0.0375 / 0.01 = 9375 Pa; one of k_v = 4e4 N/m
+  // 37.5 kPa (breaks), one of 3.6e4 N/m 33.75 kPa (holds). The present-compression reading keeps
+  // both (threshold sigma_f = 100 kPa).
+  BondRest b = unitBond();
+  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const BodyState j = {{0.2, 0.0}, 0.0375, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  BondConstants law = bondLaw(0.5);
+  law.vertical_stress = kVerticalShear;
+  for (const double k_v : {4e4, 3.6e4}) {
+    b.k_vertical = k_v;
+    law.failure_compression = kCompressionStrength;
+    const BondForce printed = rmibBondForce(b, i, kNoTurn, j, kNoTurn, law);
+    EXPECT_NEAR(printed.sigma_v, 0.25 * k_v * 0.0375 / 0.01, 1e-6 * printed.sigma_v);
+    EXPECT_EQ(printed.sigma_c, 0.0);
+    EXPECT_EQ(printed.breaks, k_v > 3.8e4) << "k_v " << k_v;
+    law.failure_compression = kCompressionCurrent;
+    EXPECT_FALSE(rmibBondForce(b, i, kNoTurn, j, kNoTurn, law).breaks) << "k_v " << k_v;
+  }
+}
+
+TEST(Bond, WithTheSmoothingOnTheStrengthTheSpringsAreWholeAndTheThresholdsFall) {
+  // ice.bond_smoothing = strength, n = 1, j 0.02 m higher (K = 0.6) and pulled 5e-5 m along x:
+  // F_x on j = -k_n 5e-5 = -750 N (unsmoothed; K_n k_n u = -450 N with the smoothing on the force),
+  // sigma_h = 750 / (0.05 * 0.2) = 75 kPa, against K_n sigma_f = 60 kPa: it breaks. Smoothed on
+  // the force it carries 45 kPa < 100 kPa and holds. F_z on j = -k_v 0.02 = -200 N.
+  const BondRest b = unitBond();
+  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const BodyState j = {{0.2 + 5e-5, 0.0}, 0.02, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  BondConstants law = bondLaw(0.0);
+  law.vertical_stress = kVerticalShear;
+  law.bond_smoothing = kSmoothStrength;
+  const BondForce on_strength = rmibBondForce(b, i, kNoTurn, j, kNoTurn, law);
+  EXPECT_NEAR(on_strength.force_on_j.x, -b.k_normal * 5e-5, 1e-9 * 750.0);
+  EXPECT_NEAR(on_strength.fz_on_j, -b.k_vertical * 0.02, 1e-9 * 200.0);
+  EXPECT_NEAR(on_strength.sigma_h, 75e3, 1e-6 * 75e3);
+  EXPECT_TRUE(on_strength.breaks);
+  law.bond_smoothing = kSmoothForce;
+  const BondForce on_force = rmibBondForce(b, i, kNoTurn, j, kNoTurn, law);
+  EXPECT_NEAR(on_force.force_on_j.x, -0.6 * b.k_normal * 5e-5, 1e-9 * 450.0);
+  EXPECT_FALSE(on_force.breaks);
+  // The vertical threshold falls with K_v too: sigma_v = 200 / 0.01 = 20 kPa breaks a bond of
+  // sigma_f = 30 kPa at K_v = 0.6 (18 kPa) and holds at K_v = 1 (j level, pulled nowhere).
+  law.bond_smoothing = kSmoothStrength;
+  law.flexural_strength = 30e3;
+  EXPECT_TRUE(rmibBondForce(b, i, kNoTurn, BodyState{{0.2, 0.0}, 0.02, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia},
+                            kNoTurn, law).breaks);
+  EXPECT_FALSE(rmibBondForce(b, i, kNoTurn, BodyState{{0.2, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia},
+                             kNoTurn, law).breaks);
 }
 
 TEST(Bond, RigidTurnOfThePairGivesNoForce) {

@@ -259,6 +259,38 @@ TEST_F(ScenarioFileTest, EveryVerticalStressReadingParses) {
   EXPECT_EQ(loadScenario(path, {"ice.vertical_stress=shear"}).params.ice.vertical_stress, VerticalStressModel::kShear);
 }
 
+TEST_F(ScenarioFileTest, TheReadingsOfIssue31AreOptionalAndReachTheLaws) {
+  // Left out, each takes this project's reading; named, the law's constants carry it.
+  const std::string path = kScenarioDir + "quick.yaml";
+  const Params plain = loadScenario(path).params;
+  EXPECT_EQ(plain.ice.failure_compression, FailureCompressionModel::kCurrent);
+  EXPECT_EQ(plain.ice.bond_smoothing, BondSmoothingModel::kForce);
+  EXPECT_EQ(plain.ice.contact_face, ContactFaceModel::kOverlap);
+  const Params printed = loadScenario(path, {"ice.failure_compression=strength", "ice.bond_smoothing=strength",
+                                             "ice.contact_face=thickness"}).params;
+  const IceSheet sheet = generateIceSheet(printed.sheet);
+  const ModelConstants a = buildModel(plain, sheet, "plain").constants, b = buildModel(printed, sheet, "printed").constants;
+  EXPECT_EQ(a.bond.failure_compression, kCompressionCurrent);
+  EXPECT_EQ(b.bond.failure_compression, kCompressionStrength);
+  EXPECT_EQ(a.bond.bond_smoothing, kSmoothForce);
+  EXPECT_EQ(b.bond.bond_smoothing, kSmoothStrength);
+  EXPECT_EQ(a.contact.contact_face, kFaceOverlap);
+  EXPECT_EQ(b.contact.contact_face, kFaceThickness);
+  struct Bad { const char* set; const char* key; const char* allowed; };
+  for (const Bad& bad : {Bad{"ice.failure_compression=peak", "ice.failure_compression", "expected current or strength"},
+                         Bad{"ice.bond_smoothing=both", "ice.bond_smoothing", "expected force or strength"},
+                         Bad{"ice.contact_face=Z", "ice.contact_face", "expected overlap or thickness"}}) {
+    try {
+      loadScenario(path, {bad.set});
+      ADD_FAILURE() << bad.set << " was accepted";
+    } catch (const ScenarioError& e) {
+      const std::string m = e.what();
+      EXPECT_NE(m.find(bad.key), std::string::npos) << m;
+      EXPECT_NE(m.find(bad.allowed), std::string::npos) << m;
+    }
+  }
+}
+
 TEST_F(ScenarioFileTest, VerticalSlipFrictionIsOptionalAndTakesEitherReading) {
   const std::string path = kScenarioDir + "quick.yaml";
   // Left out, the key takes the reading the shipped scenarios name.
