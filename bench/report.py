@@ -29,6 +29,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
 from png_output import save_png  # noqa: E402
 
+import device_results  # noqa: E402  (beside this file)
+
 
 def read_table(path):
     """Rows of a Markdown table as dicts keyed by the header cells."""
@@ -339,6 +341,8 @@ def main():
     kernels_section(a.run, lines)
     dem_section(a.run, a.out, lines)
     rtf_section(a.run, lines)
+    # The GPU figures come from the committed device runs (a GPU is lent to some sessions only).
+    lines += [""] + device_results.device_section(os.path.dirname(os.path.abspath(__file__))) + [""]
     path = os.path.join(a.out, "RESULTS.md")
     with open(path + ".partial", "w") as f:
         f.write("\n".join(lines))
