@@ -1,7 +1,10 @@
 #!/usr/bin/python3
 """thin_ice_run stopped by SIGTERM keeps what it reached: exit status 4, loads.csv with the rows so
 far (no loads.csv.partial left), summary.json with status "interrupted" and the pushed length
-reached, a last snapshot of that state and a checkpoint to resume from.
+reached, a last snapshot of that state and a checkpoint to resume from. Three times: a SIGTERM
+sent once, the same sent twice 50 ms apart, and a wall budget of GNU timeout, which delivers its
+SIGTERM twice (to the command and to its process group): a repeat within 1 s is the same request,
+not a second one that kills.
 
     test_run_interrupt.py THIN_ICE_RUN SOURCE_DIR
 """
@@ -15,25 +18,47 @@ import tempfile
 import time
 
 
+def stopped_run(run_tool, source, out, how):
+    """Starts quick.yaml pushed for 1000 s of simulated time (hours of stepping, so the signal
+    always comes before the target), and stops it with SIGTERM once two rows are written: sent
+    here once ("once"), twice 50 ms apart ("twice", what timeout may do), or by GNU timeout after
+    3 s of wall time ("timeout")."""
+    under_timeout = how == "timeout"
+    cmd = [run_tool, "--scenario", os.path.join(source, "config/scenarios/quick.yaml"), "--until-time", "1000",
+           # "twice": an interval of 0.2 s takes long enough (~0.1 s of wall) that the repeat comes
+           # while the first request is still being honoured.
+           "--output-interval", "0.2" if how == "twice" else "0.01", "--snapshots", "3", "--out", out]
+    if under_timeout:
+        # --preserve-status: timeout exits with the command's own status, 4 when it kept its output.
+        cmd = ["timeout", "--preserve-status", "-s", "TERM", "3"] + cmd
+    proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    partial = os.path.join(out, "loads.csv.partial")
+    deadline = time.monotonic() + 120.0
+    while time.monotonic() < deadline:  # wait for the header and two rows
+        if os.path.exists(partial) and sum(1 for _ in open(partial)) >= 3:
+            break
+        time.sleep(0.05)
+    else:
+        proc.kill()
+        sys.exit("FAIL: no rows within 120 s")
+    if not under_timeout:
+        proc.send_signal(signal.SIGTERM)
+    if how == "twice":
+        time.sleep(0.05)
+        proc.send_signal(signal.SIGTERM)
+    _, err = proc.communicate(timeout=120)
+    return proc, err
+
+
 def main():
     run_tool, source = sys.argv[1], sys.argv[2]
-    with tempfile.TemporaryDirectory() as out:
-        # quick.yaml pushed for 1000 s of simulated time: hours of stepping, so the signal always
-        # comes before the target.
-        cmd = [run_tool, "--scenario", os.path.join(source, "config/scenarios/quick.yaml"), "--until-time", "1000",
-               "--output-interval", "0.01", "--snapshots", "3", "--out", out]
-        proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
+    for how in ("once", "twice", "timeout"):
+        with tempfile.TemporaryDirectory() as out:
+            check(*stopped_run(run_tool, source, out, how), out, "SIGTERM " + how)
+
+
+def check(proc, err, out, how):
         partial = os.path.join(out, "loads.csv.partial")
-        deadline = time.monotonic() + 120.0
-        while time.monotonic() < deadline:  # wait for the header and two rows
-            if os.path.exists(partial) and sum(1 for _ in open(partial)) >= 3:
-                break
-            time.sleep(0.05)
-        else:
-            proc.kill()
-            sys.exit("FAIL: no rows within 120 s")
-        proc.send_signal(signal.SIGTERM)
-        _, err = proc.communicate(timeout=120)
         failures = []
         if proc.returncode != 4:
             failures.append(f"exit status {proc.returncode}, expected 4 (stderr: {err.strip()})")
@@ -41,7 +66,7 @@ def main():
             failures.append("loads.csv.partial left behind")
         missing = [f for f in ("loads.csv", "summary.json") if not os.path.exists(os.path.join(out, f))]
         if missing:
-            sys.exit("FAIL: " + "; ".join(failures + [f"no {f} written" for f in missing]))
+            sys.exit(f"FAIL ({how}): " + "; ".join(failures + [f"no {f} written" for f in missing]))
         rows = list(csv.DictReader(open(os.path.join(out, "loads.csv"))))
         summary = json.load(open(os.path.join(out, "summary.json")))
         if summary["status"] != "interrupted":
@@ -58,8 +83,8 @@ def main():
         if not index or abs(float(index[-1]["time_s"]) - summary["simulated_time_s"]) > 1e-9:
             failures.append("no snapshot of the state reached")
         if failures:
-            sys.exit("FAIL: " + "; ".join(failures))
-        print(f"OK: stopped at t = {summary['simulated_time_s']} s after {len(rows)} rows, exit status 4")
+            sys.exit(f"FAIL ({how}): " + "; ".join(failures))
+        print(f"OK ({how}): stopped at t = {summary['simulated_time_s']} s after {len(rows)} rows, exit status 4")
 
 
 if __name__ == "__main__":
