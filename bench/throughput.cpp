@@ -3,6 +3,8 @@
 // thread counts. Prints a Markdown table on stdout.
 //   thin_ice_bench --scenario FILE [--cells N]... [--threads T]... [--sheet intact|broken]...
 //                      [--cell-steps S] [--rebuild-each-step] [--backend cpu|cuda]
+//   thin_ice_bench --state DIR [--threads T]... [--steps N] [--backend cpu|cuda]
+//                      (steps from a saved state, state_bench.hpp)
 // Each case: a square-ish sheet of about N cells cut from FILE's ice (structure and walls moved
 // out of the way), 20 warm-up steps, then enough steps for about S cell-steps (default 3e7).
 // "broken": flexural and compressive strength set to 1 Pa, so every bond breaks in the first
@@ -21,6 +23,7 @@
 #include "thin_ice_sim/built_backends.hpp"
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/simulation.hpp"
+#include "state_bench.hpp"
 
 namespace {
 
@@ -67,6 +70,8 @@ int main(int argc, char** argv) {
   bool rebuild_each_step = false;
   std::string backend_name = "cpu";
   double cell_steps = 3e7;
+  std::string state_dir;
+  long state_steps = 2000;
   for (int k = 1; k < argc; k += 2) {
     const std::string flag = argv[k];
     if (flag == "--rebuild-each-step") {
@@ -80,6 +85,8 @@ int main(int argc, char** argv) {
     }
     const std::string value = argv[k + 1];
     if (flag == "--scenario") scenario_path = value;
+    else if (flag == "--state") state_dir = value;
+    else if (flag == "--steps" && std::atol(value.c_str()) > 0) state_steps = std::atol(value.c_str());
     else if (flag == "--cells") sizes.push_back(std::atol(value.c_str()));
     else if (flag == "--threads") threads.push_back(std::atoi(value.c_str()));
     else if (flag == "--cell-steps") cell_steps = std::atof(value.c_str());
@@ -90,10 +97,19 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  if (!state_dir.empty()) {
+    if (threads.empty()) threads = {1};
+    int status = 0;
+    for (size_t k = 0; k < threads.size() && status == 0; ++k) {
+      status = thin_ice_bench::benchState({state_dir, backend_name, threads[k], state_steps}, k == 0);
+    }
+    return status;
+  }
   if (scenario_path.empty()) {
     std::fprintf(stderr,
                  "usage: thin_ice_bench --scenario FILE [--cells N]... [--threads T]... "
-                 "[--sheet intact|broken]... [--cell-steps S] [--rebuild-each-step] [--backend cpu|cuda]\n");
+                 "[--sheet intact|broken]... [--cell-steps S] [--rebuild-each-step] [--backend cpu|cuda]\n"
+                 "       thin_ice_bench --state DIR [--threads T]... [--steps N] [--backend cpu|cuda]\n");
     return 2;
   }
   if (sizes.empty()) sizes = {1000, 10000, 100000};
