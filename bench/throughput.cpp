@@ -21,6 +21,7 @@
 
 #include "thin_ice_sim/backend.hpp"
 #include "thin_ice_sim/built_backends.hpp"
+#include "thin_ice_sim/openmp_wait_policy.hpp"
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/simulation.hpp"
 #include "state_bench.hpp"
@@ -62,6 +63,7 @@ std::vector<std::string> sheetOverrides(const thin_ice::Params& p, long cells, b
 }  // namespace
 
 int main(int argc, char** argv) {
+  thin_ice::restartWithPassiveOpenMpWaitUnlessSet(argv);
   thin_ice::registerBuiltBackends();
   std::string scenario_path;
   std::vector<long> sizes;

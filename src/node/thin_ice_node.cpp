@@ -8,8 +8,10 @@
 
 #include "sim_node.hpp"
 #include "thin_ice_sim/built_backends.hpp"
+#include "thin_ice_sim/openmp_wait_policy.hpp"
 
 int main(int argc, char** argv) {
+  thin_ice::restartWithPassiveOpenMpWaitUnlessSet(argv);
   thin_ice::registerBuiltBackends();
   ros::init(argc, argv, "thin_ice_sim");
   try {

@@ -50,6 +50,7 @@
 #include <vector>
 
 #include "progress_line.hpp"
+#include "thin_ice_sim/openmp_wait_policy.hpp"
 #include "resume_switch.hpp"
 #include "thin_ice_sim/built_backends.hpp"
 #include "thin_ice_sim/checkpoint.hpp"
@@ -646,6 +647,7 @@ std::unique_ptr<Simulation> prepare(Options& o, Continuation& cont) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  thin_ice::restartWithPassiveOpenMpWaitUnlessSet(argv);
   thin_ice::registerBuiltBackends();
   const Clock::time_point setup_start = Clock::now();
   Options options;
