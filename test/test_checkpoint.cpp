@@ -149,9 +149,10 @@ TEST(Checkpoint, TheFileHoldsEveryFieldAsItWas) {
   EXPECT_EQ(r.state.contact_i, c.state.contact_i);
   EXPECT_EQ(r.state.contact_j, c.state.contact_j);
   EXPECT_EQ(r.state.contact_reference, c.state.contact_reference);
+  EXPECT_TRUE(r.checksummed);
   // magic 8, mark 4, hash 4 + 16, four scalars 4 x 8, cells 8 + 2 x 64, bonds 8 + 3,
-  // one pair 8 + 4 + 4 + 8, end 8 bytes
-  EXPECT_EQ(fileBytes(path).size(), 8u + 4 + 20 + 32 + 136 + 11 + 24 + 8);
+  // one pair 8 + 4 + 4 + 8, checksum 8, end 8 bytes
+  EXPECT_EQ(fileBytes(path).size(), 8u + 4 + 20 + 32 + 136 + 11 + 24 + 8 + 8);
   std::remove(path.c_str());
 }
 
@@ -190,6 +191,35 @@ TEST(Checkpoint, BadFilesAreRefusedWithTheReason) {
   huge[cell_count_at + 6] = 0x7f;  // ~3.6e16 cells: refused before any allocation
   expectUnreadable(huge, "truncated in cells");
   expectUnreadable(std::string(8, 'x') + good.substr(8), "header");
+  // One flipped bit anywhere in the contents, here in the first cell's x (the outside tester's
+  // case: it resumed silently before format 2), and a flipped exponent byte of the same number
+  // (a cell 5.6e306 m away): the checksum refuses both.
+  const size_t first_cell_x = cell_count_at + 8;
+  std::string flipped = good;
+  flipped[first_cell_x] ^= 0x01;
+  expectUnreadable(flipped, "checksum does not match");
+  std::string far = good;
+  far[first_cell_x + 7] ^= 0x40;
+  expectUnreadable(far, "checksum does not match");
+}
+
+TEST(Checkpoint, AFileOfFormat1WithoutAChecksumIsStillRead) {
+  // Format 1: format 2 less its checksum, under the header TICKPT01 (the committed long runs'
+  // checkpoints and bench/states/ are of it). It reads as it was written, marked unchecksummed.
+  Simulation sim(strip(), BackendKind::kCpu);
+  sim.advance(0.01);
+  const std::string path = temporaryPath("format1.bin");
+  writeCheckpoint(path, takeCheckpoint(sim));
+  std::string bytes = fileBytes(path);
+  bytes[7] = '1';
+  bytes.erase(bytes.size() - 16, 8);  // the checksum, before the end mark
+  writeBytes(path, bytes);
+  const Checkpoint old = readCheckpoint(path);
+  EXPECT_FALSE(old.checksummed);
+  EXPECT_EQ(old.state.steps, sim.stepCount());
+  EXPECT_EQ(old.state.motion.size(), static_cast<size_t>(sim.cellCount()));
+  EXPECT_EQ(old.state.motion.back().x, sim.saveState().motion.back().x);
+  std::remove(path.c_str());
 }
 
 TEST(Checkpoint, AStateThatDoesNotFitTheModelIsRefusedAndChangesNothing) {

@@ -13,6 +13,9 @@ struct Checkpoint {
   std::string scenario_hash;     ///< Scenario::hash of the run's scenario (file text + overrides)
   double pusher_velocity = 0.0;  ///< [m/s] commanded at the time of the checkpoint
   BackendState state;
+  /// Read from a file that carries a checksum (format 2); false for format 1 (before 2026-12-04),
+  /// which still resumes, with a warning that damage to it cannot be told.
+  bool checksummed = true;
 };
 
 Checkpoint takeCheckpoint(const Simulation& sim);
@@ -28,7 +31,8 @@ void restoreCheckpoint(Simulation& sim, const Checkpoint& checkpoint, bool accep
 void writeCheckpoint(const std::string& path, const Checkpoint& checkpoint);
 
 /// Throws std::runtime_error naming the path and what is wrong: not a checkpoint, another format
-/// version or byte order, truncated, or bytes left over.
+/// version or byte order, truncated, bytes left over, or (format 2) a checksum that does not match
+/// the contents: the file is damaged. Reads format 1 (no checksum) too, marked checksummed = false.
 Checkpoint readCheckpoint(const std::string& path);
 
 }  // namespace thin_ice

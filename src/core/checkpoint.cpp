@@ -1,9 +1,11 @@
 // Checkpoint file layout (native endian; the byte-order mark refuses a file from a machine of
 // the other order):
-//   "TICKPT01" | u32 byte-order mark 0x01020304 | u32 hash length, hash bytes |
+//   "TICKPT02" | u32 byte-order mark 0x01020304 | u32 hash length, hash bytes |
 //   f64 pusher velocity | f64 time | i64 steps | f64 pusher x |
 //   u64 cells,  CellMotion x cells (8 f64 each) | u64 bonds, u8 x bonds |
-//   u64 pairs,  i32 i x pairs, i32 j x pairs, f64 S_ref x pairs | "TICKEND\0"
+//   u64 pairs,  i32 i x pairs, i32 j x pairs, f64 S_ref x pairs |
+//   u64 checksum: FNV-1a 64 of every byte before it | "TICKEND\0"
+// Format 1 ("TICKPT01", until 2026-12-04) is the same without the checksum; it is still read.
 #include "thin_ice_sim/checkpoint.hpp"
 
 #include <cmath>
@@ -16,13 +18,15 @@
 #include <utility>
 #include <vector>
 
+#include "thin_ice_sim/fnv_hash.hpp"
 #include "thin_ice_sim/sheet_io.hpp"
 #include "thin_ice_sim/simulation.hpp"
 
 namespace thin_ice {
 namespace {
 
-constexpr char kMagic[8] = {'T', 'I', 'C', 'K', 'P', 'T', '0', '1'};
+constexpr char kMagic[8] = {'T', 'I', 'C', 'K', 'P', 'T', '0', '2'};
+constexpr char kMagicWithoutChecksum[8] = {'T', 'I', 'C', 'K', 'P', 'T', '0', '1'};
 constexpr char kEnd[8] = {'T', 'I', 'C', 'K', 'E', 'N', 'D', '\0'};
 constexpr std::uint32_t kByteOrderMark = 0x01020304u;
 
@@ -67,6 +71,16 @@ class Reader {
     take(found, sizeof(found), what);
     if (std::memcmp(found, tag, sizeof(found)) != 0) fail(std::string("no ") + what);
   }
+  /// Which of two 8-byte tags comes next: 0 for `a`, 1 for `b`; fails naming `what` otherwise.
+  int expectOneOf(const char (&a)[8], const char (&b)[8], const char* what) {
+    char found[8];
+    take(found, sizeof(found), what);
+    if (std::memcmp(found, a, sizeof(found)) == 0) return 0;
+    if (std::memcmp(found, b, sizeof(found)) == 0) return 1;
+    fail(std::string("no ") + what);
+  }
+  /// FNV-1a of every byte read so far.
+  std::uint64_t checksumSoFar() const { return fnv1a64(bytes_.data(), cursor_); }
   void expectEnd() {
     if (cursor_ != bytes_.size()) fail(std::to_string(bytes_.size() - cursor_) + " bytes after the end mark");
   }
@@ -123,6 +137,7 @@ void writeCheckpoint(const std::string& path, const Checkpoint& c) {
   w.putArray(s.contact_i);
   w.putArray(s.contact_j);
   w.putArray(s.contact_reference);
+  w.put(fnv1a64(w.bytes().data(), w.bytes().size()));
   w.putRaw(kEnd, sizeof(kEnd));
   writeFileAtomically(path, w.bytes());
 }
@@ -131,9 +146,12 @@ Checkpoint readCheckpoint(const std::string& path) {
   std::ifstream file(path, std::ios::binary);
   if (!file) throw std::runtime_error("checkpoint '" + path + "': cannot be read");
   Reader r(std::string(std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()), path);
-  r.expect(kMagic, "checkpoint header (TICKPT01: another file or another format version)");
+  const bool checksummed =
+      r.expectOneOf(kMagic, kMagicWithoutChecksum, "checkpoint header (TICKPT02 or TICKPT01: another file or "
+                                                   "another format version)") == 0;
   if (r.get<std::uint32_t>("byte-order mark") != kByteOrderMark) r.fail("written on a machine of the other byte order");
   Checkpoint c;
+  c.checksummed = checksummed;
   const std::uint32_t hash_length = r.get<std::uint32_t>("scenario hash");
   const std::vector<char> hash = r.getArray<char>(hash_length, "scenario hash");
   c.scenario_hash.assign(hash.begin(), hash.end());
@@ -148,6 +166,12 @@ Checkpoint readCheckpoint(const std::string& path) {
   s.contact_i = r.getArray<int>(pairs, "pairs");
   s.contact_j = r.getArray<int>(pairs, "pairs");
   s.contact_reference = r.getArray<double>(pairs, "pairs");
+  if (checksummed) {
+    const std::uint64_t computed = r.checksumSoFar();
+    if (r.get<std::uint64_t>("checksum") != computed) {
+      r.fail("the checksum does not match the contents: the file is damaged (refused; nothing was resumed)");
+    }
+  }
   r.expect(kEnd, "end mark (truncated or corrupt)");
   r.expectEnd();
   return c;

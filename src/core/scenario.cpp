@@ -43,6 +43,8 @@
 #include <sstream>
 #include <type_traits>
 
+#include "thin_ice_sim/fnv_hash.hpp"
+
 namespace thin_ice {
 namespace {
 
@@ -562,15 +564,11 @@ void checkParams(const Params& p) {
 
 /// 64-bit FNV-1a over the file bytes, then each override followed by a newline.
 std::string scenarioHash(const std::string& text, const std::vector<std::string>& overrides) {
-  std::uint64_t h = 14695981039346656037ULL;
-  auto add = [&h](const std::string& bytes) {
-    for (const char c : bytes) {
-      h ^= static_cast<unsigned char>(c);
-      h *= 1099511628211ULL;
-    }
-  };
-  add(text);
-  for (const std::string& o : overrides) add(o + "\n");
+  std::uint64_t h = fnv1a64(text.data(), text.size());
+  for (const std::string& o : overrides) {
+    const std::string line = o + "\n";
+    h = fnv1a64(line.data(), line.size(), h);
+  }
   std::ostringstream hex;
   hex << std::hex << std::setw(16) << std::setfill('0') << h;
   return hex.str();
@@ -617,4 +615,5 @@ Scenario loadScenario(const std::string& path, const std::vector<std::string>& o
   return scenario;
 }
 
-}  // namespace thin_ice
+}  // namespace thin_ice#include "thin_ice_sim/fnv_hash.hpp"
+

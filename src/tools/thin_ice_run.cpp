@@ -522,6 +522,10 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
                         "since 2026-12-01)");
     }
     checkpoint = thin_ice::readCheckpoint(checkpoint_path);
+    if (!checkpoint.checksummed) {
+      std::fprintf(stderr, "thin_ice_run: warning: %s is of format 1 and carries no checksum: damage to it cannot be "
+                   "told; the next one written is checksummed\n", checkpoint_path.c_str());
+    }
     if (checkpoint.state.steps != summary.steps) {
       throw ResumeError(checkpoint_path + " is at step " + std::to_string(checkpoint.state.steps) +
                         " but summary.json says the run ended at step " + std::to_string(summary.steps));
