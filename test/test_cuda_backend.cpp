@@ -1,5 +1,5 @@
-// CPU-GPU parity of the CUDA backend (built only with CUDA; every test skips, with the reason,
-// on a machine without a GPU, as CI is).
+// CPU-GPU parity of the CUDA backend (built only with CUDA; every GPU test skips, with the reason,
+// on a machine without a GPU, as CI is; their CPU halves, GpuParityReference, run everywhere).
 //   1. A field of free cells (the sheet's bonds removed), each displaced by up to 1 mm, turned by
 //      up to 0.02 rad and moving at up to 0.2 m/s, so that neighbours overlap and collide: after
 //      50 steps every cell state agrees with the CPU's to 1e-9 of its scale (both backends do the
@@ -61,6 +61,56 @@ Model sheetPressedIntoTheFace() {
   return model;
 }
 
+/// Free cells (the sheet's bonds removed) jostled so that neighbours overlap and collide.
+Model freeCellsJostled() {
+  Model model = stripModelOf({});
+  testing::jostleFreeCells(model, 7);
+  return model;
+}
+
+/// The strip bent along x as z = kappa_0 x^3 / 6 (curvature kappa_0 x, kappa_0 = 0.05 1/m^2), so
+/// that bonds break by their curvature from the first step on where the criterion is on.
+Model bentStrip(const std::vector<std::string>& overrides) {
+  Model model = stripModelOf(overrides);
+  const double x0 = model.initial.front().x;
+  for (CellMotion& m : model.initial) m.z += 0.05 * std::pow(m.x - x0, 3) / 6.0;
+  return model;
+}
+
+// The CPU half of every parity case, run where there is no GPU too (CI): the reference must be
+// healthy after its 50 steps, and what the comparison rests on must be there (contacts between
+// the free cells, bonds broken by the bend), so that a broken set-up cannot hide behind the skip.
+TEST(GpuParityReference, EveryCaseIsAHealthyAndMeaningfulReferenceOnTheCpu) {
+  registerBuiltBackends();
+  struct Case {
+    const char* name;
+    Model model;
+    bool expects_contacts, expects_breaks;
+  };
+  const Case cases[] = {
+      {"free cells", freeCellsJostled(), true, false},
+      {"bent, curvature criterion", bentStrip({"ice.curvature_failure=true"}), false, true},
+      {"bent, criterion on the sheet only",
+       bentStrip({"ice.curvature_failure=true", "ice.curvature_failure_scope=sheet"}), false, true},
+      {"bent, plate bending and criterion", bentStrip({"ice.plate_bending=true", "ice.curvature_failure=true"}), false,
+       true},
+  };
+  for (const Case& c : cases) {
+    std::unique_ptr<Backend> cpu = makeCpuBackend(c.model, 1);
+    cpu->step(50, c.model.initial_pusher_velocity);
+    EXPECT_EQ(cpu->healthError(), "") << c.name;
+    if (c.expects_contacts) EXPECT_GT(cpu->loads().contacts, 0) << c.name;
+    if (c.expects_breaks) EXPECT_GT(cpu->loads().broken_bonds, 0) << c.name;
+  }
+  // The short strip of the last case: it meets the structure and breaks within its 0.45 s.
+  Simulation strip(loadScenario(kQuick, {"sheet.length=1.0", "structure.toe_x=1.1",
+                                         "bottom.distance_from_structure=0.5", "numerics.threads=1"}),
+                   BackendKind::kCpu);
+  strip.advance(0.45);
+  EXPECT_TRUE(strip.healthy());
+  EXPECT_GT(strip.loads().broken_bonds, 0);
+}
+
 // The CPU half of the case above, run where there is no GPU too (CI): the reference must be
 // healthy after its 50 steps, and the face must carry a load, so that the comparison on a GPU
 // compares something.
@@ -84,10 +134,6 @@ class GpuParity : public ::testing::Test {
     ASSERT_NE(gpu, nullptr) << "test built with CUDA but the backend is not registered";
     const std::string missing = gpu->unavailable_reason();
     if (!missing.empty()) GTEST_SKIP() << "no GPU run: " << missing;
-  }
-
-  static Model stripModel(const std::vector<std::string>& more_overrides = {}) {
-    return stripModelOf(more_overrides);
   }
 
   /// Steps both backends and compares every cell state to `relative` of its scale.
@@ -120,8 +166,7 @@ class GpuParity : public ::testing::Test {
 };
 
 TEST_F(GpuParity, FreeCellsCollidingAgreeAfter50Steps) {
-  Model model = stripModel();
-  testing::jostleFreeCells(model, 7);
+  const Model model = freeCellsJostled();
   ASSERT_GT(model.initial.size(), 10u);
   expectSameStates(model, 50, 1e-9);
 }
@@ -132,36 +177,26 @@ TEST_F(GpuParity, IntactSheetPressedIntoTheStructureAgreesAfter50Steps) {
 }
 
 TEST_F(GpuParity, SheetBentPastItsBreakingCurvatureBreaksAlikeWithTheCurvatureCriterion) {
-  // ice.curvature_failure on, the strip bent along x as z = kappa_0 x^3 / 6 (curvature kappa_0 x,
-  // kappa_0 = 0.05 1/m^2), so that bonds break by their curvature from the first step on: the
-  // height-gradient kernel and the bond kernel must pick the same ones as the CPU.
-  Model model = stripModel({"ice.curvature_failure=true"});
+  // ice.curvature_failure on, the strip bent (bentStrip): the height-gradient kernel and the bond
+  // kernel must pick the same bonds as the CPU.
+  const Model model = bentStrip({"ice.curvature_failure=true"});
   ASSERT_GT(model.constants.bond.curvature_stress_modulus, 0.0);
-  const double x0 = model.initial.front().x;
-  for (CellMotion& m : model.initial) m.z += 0.05 * std::pow(m.x - x0, 3) / 6.0;
-  std::unique_ptr<Backend> cpu = makeCpuBackend(model, 1);
-  cpu->step(1, model.initial_pusher_velocity);
-  EXPECT_GT(cpu->loads().broken_bonds, 0) << "the bend should break bonds at once";
   expectSameStates(model, 50, 1e-9);
 }
 
 TEST_F(GpuParity, SheetBentWithTheCurvatureCriterionOnTheIntactSheetOnlyBreaksAlike) {
   // ice.curvature_failure_scope: sheet, the strip bent as above: after the first bonds break, the
   // host marks the largest piece at each rebuild and the bond kernel must check the same bonds.
-  Model model = stripModel({"ice.curvature_failure=true", "ice.curvature_failure_scope=sheet"});
+  const Model model = bentStrip({"ice.curvature_failure=true", "ice.curvature_failure_scope=sheet"});
   ASSERT_TRUE(model.constants.curvature_sheet_only);
-  const double x0 = model.initial.front().x;
-  for (CellMotion& m : model.initial) m.z += 0.05 * std::pow(m.x - x0, 3) / 6.0;
   expectSameStates(model, 50, 1e-9);
 }
 
 TEST_F(GpuParity, SheetBentWithPlateBendingAndTheCurvatureCriterionAgreesAfter50Steps) {
   // ice.plate_bending and ice.curvature_failure on, the strip bent as in the case above: the four
   // plate kernels must give each cell the CPU's plate force, and the bonds must break alike.
-  Model model = stripModel({"ice.plate_bending=true", "ice.curvature_failure=true"});
+  const Model model = bentStrip({"ice.plate_bending=true", "ice.curvature_failure=true"});
   ASSERT_GT(model.constants.plate_bond_stiffness, 0.0);
-  const double x0 = model.initial.front().x;
-  for (CellMotion& m : model.initial) m.z += 0.05 * std::pow(m.x - x0, 3) / 6.0;
   expectSameStates(model, 50, 1e-9);
 }
 
