@@ -116,6 +116,27 @@ TEST(Contact, AsPrintedTheHorizontalForceActsOverTheThicknessWhateverTheOffset) 
   EXPECT_EQ(level.force_on_j.x, level_overlap.force_on_j.x);
 }
 
+TEST(Contact, WithTheShallowerDepthTheVerticalForceOfSlabsSideBySideIsSmall) {
+  // ice.vertical_contact_depth = shallower, j 0.02 m higher and 1 mm into i (Z = 0.03 m, S/L =
+  // 1 mm): F_v = K_v E_v' (S/h) min(Z, S/L) = 0.6 (9e8/0.7) (2e-4/0.05) 1e-3 = 3085.7 N, against
+  // 92571.4 N with Z; F_n is unchanged (23142.9 N).
+  ContactConstants c = iceContact();
+  c.vertical_contact_depth = kVerticalDepthShallower;
+  const PairForce side_by_side = squaresOneMillimetreIn(0.02, c);
+  EXPECT_NEAR(side_by_side.fz_on_j, 0.6 * 9e8 / 0.7 * 2e-4 / 0.05 * 1e-3, 1e-6 * 3085.7);
+  EXPECT_NEAR(side_by_side.force_on_j.x, 0.6 * 9e8 / 0.7 * 0.03 * 1e-3, 1e-6 * 23142.9);
+  // A slab lying on another: j half over i (S = 0.02 m^2, L = 0.2 m, S/L = 0.1 m) and 0.045 m
+  // higher (Z = 5 mm, K_v = 0.1): Z is the shallower, so F_v = 0.1 (9e8/0.7) (0.02/0.05) 5e-3
+  // = 257142.9 N either way.
+  const auto a = square({0.0, 0.0}, 0.2), b = square({0.1, 0.0}, 0.2);
+  const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
+  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const BodyState j = {{0.1, 0.0}, 0.045, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const double stacked = 0.1 * 9e8 / 0.7 * 0.02 / 0.05 * 5e-3;
+  EXPECT_NEAR(demContactForce(o, i, j, c, kNoReference).fz_on_j, stacked, 1e-6 * stacked);
+  EXPECT_NEAR(demContactForce(o, i, j, iceContact(), kNoReference).fz_on_j, stacked, 1e-6 * stacked);
+}
+
 TEST(Contact, HorizontalAndVerticalExponentsActApart) {
   // As above with n = 2 for K_n and n = 1 for K_v: K_n = 0.6^2 = 0.36, K_v = 0.6, so
   // F_n = 0.36 (9e8/0.7) 0.03 1e-3 = 13885.7 N and F_v = 92571.4 N as before.

@@ -47,6 +47,14 @@ enum class ContactFaceModel {
   kThickness,  ///< Eq. (1) as printed (x h^3): the face h, depth S/L, crushing cap sigma_c h L
 };
 
+/// What penetration depth the vertical contact force of Eq. (3) takes.
+enum class VerticalContactDepthModel {
+  kVerticalOverlap,  ///< Z of Eq. (2), whatever the horizontal overlap (as printed)
+  kShallower,        ///< the shallower of Z and S/L: two slabs side by side overlap by S/L across,
+                     ///< so are separated across, not up and down (deviation 1 of Eq. (1), applied
+                     ///< to Eq. (3) too)
+};
+
 /// Which bonds the curvature criterion (ice.curvature_failure) checks (beyond the paper:
 /// physics/sheet_curvature.hpp, docs/model.md "Curvature failure").
 enum class CurvatureFailureScope {
@@ -73,6 +81,8 @@ struct IceParams {
   BondSmoothingModel bond_smoothing = BondSmoothingModel::kForce;
   /// The face height of Eq. (1): the vertical overlap Z or the thickness h.
   ContactFaceModel contact_face = ContactFaceModel::kOverlap;
+  /// The penetration depth of Eq. (3): Z, or the shallower of Z and S/L.
+  VerticalContactDepthModel vertical_contact_depth = VerticalContactDepthModel::kVerticalOverlap;
   /// Also break a bond when the plate stress of the sheet's curvature across it, E h |kappa| /
   /// (2 (1 - nu^2)), exceeds Eq. (13)'s threshold (beyond the paper: physics/sheet_curvature.hpp).
   bool curvature_failure = false;

@@ -43,7 +43,9 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
                ice.contact_damping_ratio,
                regularisation,
                verticalSlipFrictionReading(ice.vertical_slip_friction),
-               ice.contact_face == ContactFaceModel::kThickness ? kFaceThickness : kFaceOverlap};
+               ice.contact_face == ContactFaceModel::kThickness ? kFaceThickness : kFaceOverlap,
+               ice.vertical_contact_depth == VerticalContactDepthModel::kShallower ? kVerticalDepthShallower
+                                                                                   : kVerticalDepthOverlap};
   c.bond = {h,
             ice.smoothing_exponent_h,
             ice.smoothing_exponent_v,

@@ -8,7 +8,7 @@
 //   Enums:    ice.vertical_stress: shear | bending | plate;  sheet.layout: jittered_grid | poisson_disk;
 //             ice.vertical_slip_friction: level_only | edge_face;  ice.curvature_failure_scope: all | sheet
 //             ice.failure_compression: current | strength;  ice.bond_smoothing: force | strength
-//             ice.contact_face: overlap | thickness
+//             ice.contact_face: overlap | thickness;  ice.vertical_contact_depth: vertical_overlap | shallower
 //   Integers: structure.panels, sheet.lloyd_iterations, numerics.max_steps_between_rebuilds,
 //             numerics.structure_substeps,
 //             numerics.threads (signed), sheet.seed (unsigned 64 bit); decimal digits only.
@@ -158,6 +158,13 @@ ContactFaceModel toContactFace(const YAML::Node& n) {
   throw BadValue(describe(n));
 }
 
+VerticalContactDepthModel toVerticalContactDepth(const YAML::Node& n) {
+  const std::string& s = plainScalar(n);
+  if (s == "vertical_overlap") return VerticalContactDepthModel::kVerticalOverlap;
+  if (s == "shallower") return VerticalContactDepthModel::kShallower;
+  throw BadValue(describe(n));
+}
+
 CurvatureFailureScope toCurvatureFailureScope(const YAML::Node& n) {
   const std::string& s = plainScalar(n);
   if (s == "all") return CurvatureFailureScope::kAll;
@@ -230,6 +237,8 @@ const std::vector<Section>& sections() {
               toFailureCompression, false),
         field(&P::ice, &IceParams::bond_smoothing, "bond_smoothing", "force or strength", toBondSmoothing, false),
         field(&P::ice, &IceParams::contact_face, "contact_face", "overlap or thickness", toContactFace, false),
+        field(&P::ice, &IceParams::vertical_contact_depth, "vertical_contact_depth", "vertical_overlap or shallower",
+              toVerticalContactDepth, false),
         flag(&P::ice, &IceParams::curvature_failure, "curvature_failure"),
         field(&P::ice, &IceParams::curvature_failure_scope, "curvature_failure_scope", "all or sheet",
               toCurvatureFailureScope, false),
