@@ -18,6 +18,7 @@
 #include "thin_ice_sim/ice_sheet.hpp"
 #include "thin_ice_sim/model.hpp"
 #include "thin_ice_sim/scenario.hpp"
+#include "thin_ice_sim/simulation.hpp"
 
 namespace thin_ice {
 namespace {
@@ -257,6 +258,24 @@ TEST_F(ScenarioFileTest, EveryVerticalStressReadingParses) {
   EXPECT_EQ(loadScenario(path, {"ice.vertical_stress=bending"}).params.ice.vertical_stress, VerticalStressModel::kBending);
   EXPECT_EQ(loadScenario(path, {"ice.vertical_stress=plate"}).params.ice.vertical_stress, VerticalStressModel::kPlate);
   EXPECT_EQ(loadScenario(path, {"ice.vertical_stress=shear"}).params.ice.vertical_stress, VerticalStressModel::kShear);
+}
+
+TEST_F(ScenarioFileTest, TheThreadCountIsBoundedAtLoadAndCappedAtTheCoresPresent) {
+  // Above 1024 no machine has the cores: refused at load, naming the key (2147483647 used to end in
+  // std::bad_alloc, 1000 in a libgomp abort). A valid count above the cores present runs on the
+  // cores present, and the backend's note says so.
+  const std::string path = kScenarioDir + "quick.yaml";
+  for (const char* bad : {"numerics.threads=1025", "numerics.threads=2147483647", "numerics.threads=-1"}) {
+    try {
+      loadScenario(path, {bad});
+      ADD_FAILURE() << bad << " was accepted";
+    } catch (const ScenarioError& e) {
+      EXPECT_NE(std::string(e.what()).find("numerics.threads"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("[0, 1024]"), std::string::npos) << e.what();
+    }
+  }
+  const Simulation many(loadScenario(path, {"numerics.threads=1024"}), BackendKind::kCpu);
+  EXPECT_NE(many.backendNote().find("numerics.threads = 1024 capped at the"), std::string::npos) << many.backendNote();
 }
 
 TEST_F(ScenarioFileTest, TheReadingsOfIssue31AreOptionalAndReachTheLaws) {

@@ -43,7 +43,9 @@ class CpuBackend final : public Backend {
  public:
   CpuBackend(const Model& model, int threads)
       : model_(model),
-        threads_(threads > 0 ? threads : omp_get_max_threads()),
+        // More threads than the cores present only queue up behind each other at every loop's
+        // barrier (numerics.threads = 1000 ended in a libgomp abort): capped at the cores.
+        threads_(threads > 0 ? std::min(threads, omp_get_num_procs()) : omp_get_max_threads()),
         parallel_(threads_ > 1 && (threads > 0 || model.cell_count >= kMinCellsForThreads)),
         bond_pass_(model) {
     const int n = model_.cell_count;

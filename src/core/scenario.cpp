@@ -495,6 +495,9 @@ void checkSheet(const Params& p) {
   }
 }
 
+/// The most OpenMP threads a scenario may ask for [-].
+constexpr int kMaxThreads = 1024;
+
 void checkParams(const Params& p) {
   const IceParams& ice = p.ice;
   positive("ice.thickness", ice.thickness, "the ice thickness h", " m");
@@ -566,8 +569,12 @@ void checkParams(const Params& p) {
   require(n.friction_viscous_limit > 0.0 && n.friction_viscous_limit < 2.0, "numerics.friction_viscous_limit",
           n.friction_viscous_limit, "an explicit step of viscous friction is stable below 2 m_eff/dt",
           "(0, 2)");
-  require(n.threads >= 0, "numerics.threads", n.threads, "a thread count cannot be negative",
-          "integer >= 0 (0 = all cores)");
+  // At load time, whatever the machine: above kMaxThreads is no machine's core count (the runner
+  // caps a valid count at the cores present, and says so).
+  require(n.threads >= 0 && n.threads <= kMaxThreads, "numerics.threads", n.threads,
+          "a thread count is between 0 (all cores) and " + std::to_string(kMaxThreads),
+          "integer in [0, " + std::to_string(kMaxThreads) + "] (0 = all cores; more than the cores present are "
+          "capped at them)");
   checkSheet(p);
 }
 

@@ -1,5 +1,7 @@
 #include "thin_ice_sim/simulation.hpp"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -87,6 +89,10 @@ Simulation::Simulation(const Scenario& scenario, BackendKind backend) : scenario
   } else {
     backend_ = makeCpuBackend(*model_, p.numerics.threads);
     backend_note_ = backend == BackendKind::kAuto ? "backend auto: " + gpu_missing + ", using the CPU" : "backend cpu";
+    if (p.numerics.threads > omp_get_num_procs()) {
+      backend_note_ += "; numerics.threads = " + std::to_string(p.numerics.threads) + " capped at the " +
+                       std::to_string(omp_get_num_procs()) + " cores present";
+    }
   }
   pusher_velocity_ = p.pusher.velocity;
 }
