@@ -5,6 +5,7 @@ the paper's Table 6 with this project's numbers beside the experiment's, the see
 resolution checks and the load plots. Only what the runs measured is reported; a series without
 a run is listed as not run. Three hand-written files in the runs folder are taken in as they are:
 misses.md (why each missed target is missed, and what was tried) under the targets' table,
+phase2.md (the strip bench and the paper's readings tried against those misses) after it,
 procedure.md (the calibration procedure: where each value comes from, which series were only
 predicted) after it, and calibration.md (the calibration notes, newest first) at the end, after
 the load histories.
@@ -579,6 +580,8 @@ def main():
     lines += targets_at_a_glance(runs)
     # Why each target missed above is missed, and what was tried: written by hand beside the runs.
     lines += hand_written(os.path.join(a.runs, "misses.md"))
+    # Phase 2 (issue #31): the strip bench and the paper's readings, the work on the misses above.
+    lines += hand_written(os.path.join(a.runs, "phase2.md"))
     # Where each value of the scenarios comes from, and which series were only predicted.
     lines += hand_written(os.path.join(a.runs, "procedure.md"))
     lines += ["## Table 6 layout: model against experiment", ""]

@@ -46,6 +46,9 @@ def main():
         # The hand-written account of the misses goes right under the table it explains.
         with open(os.path.join(runs, "misses.md"), "w") as f:
             f.write("### Why each miss\n\nthe account\n")
+        # Phase 2's account follows the misses it works on.
+        with open(os.path.join(runs, "phase2.md"), "w") as f:
+            f.write("### Phase 2\n\nthe readings\n")
         # The procedure follows it, before the tables; the dated notes come last, after the plots.
         with open(os.path.join(runs, "procedure.md"), "w") as f:
             f.write("## Calibration procedure\n\nthe procedure\n")
@@ -69,9 +72,10 @@ def main():
     ]
     missing = [line for line in expected if line not in text.splitlines()]
     account = text.find("### Why each miss")
+    phase2 = text.find("### Phase 2")
     procedure = text.find("## Calibration procedure")
-    if not (text.find("Weak above medium in steady state:") < account < procedure < text.find("## Table 6")):
-        missing.append("misses.md, then procedure.md, between 'Targets at a glance' and 'Table 6'")
+    if not (text.find("Weak above medium in steady state:") < account < phase2 < procedure < text.find("## Table 6")):
+        missing.append("misses.md, phase2.md, then procedure.md, between 'Targets at a glance' and 'Table 6'")
     if not (0 < text.find("## Load histories") < text.find("## Calibration notes, newest first")):
         missing.append("calibration.md after 'Load histories'")
     if missing:
