@@ -260,6 +260,31 @@ TEST_F(ScenarioFileTest, EveryVerticalStressReadingParses) {
   EXPECT_EQ(loadScenario(path, {"ice.vertical_stress=shear"}).params.ice.vertical_stress, VerticalStressModel::kShear);
 }
 
+TEST_F(ScenarioFileTest, FilesAreReadWithinBoundsAndEchoedReadably) {
+  // Each refused in one line naming the file: a device read until memory ran out, a file over
+  // 1 MiB, a second YAML document that was ignored, a long scalar echoed whole, raw bytes echoed.
+  auto refusal = [](const std::string& path) {
+    try {
+      loadScenario(path);
+    } catch (const ScenarioError& e) {
+      return std::string(e.what());
+    }
+    ADD_FAILURE() << path << " was accepted";
+    return std::string();
+  };
+  std::string m = refusal("/dev/zero");
+  EXPECT_NE(m.find("/dev/zero: is not a regular file"), std::string::npos) << m;
+  m = refusal(write("big.yaml", std::string((1 << 20) + 1, '#')));
+  EXPECT_NE(m.find("1048577 bytes; allowed: a scenario file of at most 1048576 bytes"), std::string::npos) << m;
+  m = refusal(write("two.yaml", quick_ + "\n---\nice: {thickness: 1}\n"));
+  EXPECT_NE(m.find("2 YAML documents"), std::string::npos) << m;
+  m = refusal(write("scalar.yaml", std::string(500000, 'x') + "\n"));
+  EXPECT_LT(m.size(), 400u) << "the message echoes the long scalar whole";
+  EXPECT_NE(m.find(std::string(80, 'x') + "..."), std::string::npos) << m.substr(0, 200);
+  m = refusal(write("bytes.yaml", std::string("ice:\n  \x01\xfe: 1\n")));
+  for (const char c : m) EXPECT_TRUE(c >= 0x20 && c < 0x7f) << "a raw byte in: " << m;
+}
+
 TEST_F(ScenarioFileTest, TheThreadCountIsBoundedAtLoadAndCappedAtTheCoresPresent) {
   // Above 1024 no machine has the cores: refused at load, naming the key (2147483647 used to end in
   // std::bad_alloc, 1000 in a libgomp abort). A valid count above the cores present runs on the

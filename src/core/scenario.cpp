@@ -33,6 +33,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -80,12 +81,32 @@ std::string approx(double v) {
   return s.str();
 }
 
+/// Text from a file as it may be echoed in one message line: bytes outside printable ASCII as
+/// \xNN, and at most kEchoedChars characters (then "...").
+constexpr size_t kEchoedChars = 80;
+
+std::string printable(const std::string& text) {
+  std::string out;
+  for (const char c : text) {
+    if (out.size() >= kEchoedChars) return out + "...";
+    const unsigned char u = static_cast<unsigned char>(c);
+    if (u >= 0x20 && u < 0x7f) {
+      out += c;
+    } else {
+      char hex[5];
+      std::snprintf(hex, sizeof hex, "\\x%02x", u);
+      out += hex;
+    }
+  }
+  return out;
+}
+
 std::string describe(const YAML::Node& n) {
   if (!n.IsDefined() || n.IsNull()) return "nothing";
   if (n.IsSequence()) return "a list";
   if (n.IsMap()) return "a map";
-  if (n.Tag() == "!") return "the quoted text '" + n.Scalar() + "'";
-  return "'" + n.Scalar() + "'";
+  if (n.Tag() == "!") return "the quoted text '" + printable(n.Scalar()) + "'";
+  return "'" + printable(n.Scalar()) + "'";
 }
 
 // ----- Conversions: each throws BadValue ----------------------------------------------------
@@ -313,7 +334,7 @@ const Section& findSection(const std::string& name, const std::string& where) {
     if (s.name == name) return s;
     allowed += " " + s.name;
   }
-  throw ScenarioError(where + "unknown section '" + name + "'; allowed:" + allowed);
+  throw ScenarioError(where + "unknown section '" + printable(name) + "'; allowed:" + allowed);
 }
 
 const Field& findField(const Section& section, const std::string& key, const std::string& where) {
@@ -322,7 +343,7 @@ const Field& findField(const Section& section, const std::string& key, const std
     if (f.key == key) return f;
     allowed += " " + f.key;
   }
-  throw ScenarioError(where + "unknown key '" + key + "' in section '" + section.name +
+  throw ScenarioError(where + "unknown key '" + printable(key) + "' in section '" + section.name +
                       "'; allowed:" + allowed);
 }
 
@@ -338,6 +359,10 @@ void applyValue(Params& params, const Section& section, const Field& f, const YA
 
 // ----- Reading the file and the overrides ----------------------------------------------------
 
+/// The largest scenario file read [bytes]: the shipped ones are about 6 kB; a file a thousand
+/// times that is not a scenario, and /dev/zero would be read until memory ran out.
+constexpr std::uintmax_t kMaxScenarioBytes = 1 << 20;
+
 std::string readFile(const std::string& path) {
   std::error_code ec;
   if (!std::filesystem::exists(path, ec)) {
@@ -347,22 +372,38 @@ std::string readFile(const std::string& path) {
   if (std::filesystem::is_directory(path, ec)) {
     throw ScenarioError(path + ": is a directory; expected a scenario YAML file");
   }
+  if (!std::filesystem::is_regular_file(path, ec)) {
+    throw ScenarioError(path + ": is not a regular file (a device, a pipe or a socket); expected a scenario YAML file");
+  }
+  const std::uintmax_t size = std::filesystem::file_size(path, ec);
+  if (ec || size > kMaxScenarioBytes) {
+    throw ScenarioError(path + ": " + (ec ? "cannot tell its size" : std::to_string(size) + " bytes") +
+                        "; allowed: a scenario file of at most " + std::to_string(kMaxScenarioBytes) + " bytes");
+  }
   std::ifstream in(path, std::ios::binary);
   if (!in.is_open()) throw ScenarioError(path + ": cannot open the scenario file for reading");
-  std::ostringstream text;
-  if (in.peek() != std::ifstream::traits_type::eof()) text << in.rdbuf();
-  if (in.bad()) throw ScenarioError(path + ": cannot read the scenario file");
-  return text.str();
+  std::string text(static_cast<size_t>(size), '\0');
+  in.read(&text[0], static_cast<std::streamsize>(size));
+  if (in.bad() || in.gcount() != static_cast<std::streamsize>(size)) {
+    throw ScenarioError(path + ": cannot read the scenario file");
+  }
+  return text;
 }
 
 YAML::Node parseYaml(const std::string& text, const std::string& where) {
   try {
-    return YAML::Load(text);
+    // One document: a second one (after "---") would otherwise be ignored without a word.
+    const std::vector<YAML::Node> documents = YAML::LoadAll(text);
+    if (documents.size() > 1) {
+      throw ScenarioError(where + std::to_string(documents.size()) +
+                          " YAML documents (separated by ---); allowed: one document per scenario file");
+    }
+    return documents.empty() ? YAML::Node() : documents.front();
   } catch (const YAML::ParserException& e) {
     std::ostringstream msg;
     msg << where << "YAML syntax error";
     if (!e.mark.is_null()) msg << " at line " << e.mark.line + 1 << ", col " << e.mark.column + 1;
-    msg << ": " << e.msg;
+    msg << ": " << printable(e.msg);
     throw ScenarioError(msg.str());
   }
 }
@@ -378,7 +419,7 @@ void applyFile(const YAML::Node& root, const std::string& path, Params& params) 
   std::set<std::string> seen;  // sections and "section.key"
   for (const auto& entry : root) {
     const std::string name = entry.first.Scalar();
-    if (!seen.insert(name).second) throw ScenarioError(where + name + " appears twice");
+    if (!seen.insert(name).second) throw ScenarioError(where + printable(name) + " appears twice");
     if (name == "description") {
       if (!entry.second.IsScalar()) {
         throw ScenarioError(where + "description: expected a text, got " + describe(entry.second));
@@ -631,5 +672,5 @@ Scenario loadScenario(const std::string& path, const std::vector<std::string>& o
   return scenario;
 }
 
-}  // namespace thin_ice#include "thin_ice_sim/fnv_hash.hpp"
+}  // namespace thin_ice
 
