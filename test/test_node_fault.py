@@ -16,7 +16,7 @@ class NodeFaultTest(unittest.TestCase):
         rospy.init_node("test_node_fault", anonymous=True)
         self.status = None
         rospy.Subscriber("sim/status", SimStatus, self.on_status, queue_size=10)
-        for name in ("sim/pause", "sim/unpause", "sim/reset", "sim/step"):
+        for name in ("sim/pause", "sim/unpause", "sim/unpause_checked", "sim/reset", "sim/step"):
             rospy.wait_for_service(name, timeout=60.0)
 
     def on_status(self, msg):
@@ -41,12 +41,16 @@ class NodeFaultTest(unittest.TestCase):
         self.assertFalse(rospy.ServiceProxy("sim/step", Step)(steps=10, duration=0.0).success)
         self.assertFalse(rospy.ServiceProxy("sim/step", Step)(steps=0, duration=float("nan")).success)
         self.assertFalse(rospy.ServiceProxy("sim/step", Step)(steps=0, duration=-1.0).success)
-        refused = rospy.ServiceProxy("sim/unpause", Trigger)()  # refused until a reset, with the reason
+        # sim/unpause_checked (Trigger): refused until a reset, with the reason.
+        refused = rospy.ServiceProxy("sim/unpause_checked", Trigger)()
         self.assertFalse(refused.success)
         self.assertIn(status.last_error, refused.message)  # the error itself, and what to do
         self.assertIn("sim/reset", refused.message)
+        # sim/unpause (Empty, as Gazebo's): answered, and the simulation stays paused with its error.
+        rospy.ServiceProxy("sim/unpause", Empty)()
         time.sleep(0.5)
         self.assertTrue(self.status.paused)
+        self.assertEqual(self.status.last_error, status.last_error)
         self.assertEqual(self.status.sim_time, frozen)
         publisher = rospy.Publisher("pusher/cmd_vel", Twist, queue_size=10)
         time.sleep(0.5)
@@ -56,7 +60,7 @@ class NodeFaultTest(unittest.TestCase):
         rospy.ServiceProxy("sim/reset", Empty)()
         status = self.wait_status(lambda s: s.last_error == "" and s.sim_time == 0.0, 10.0, "the reset")
         self.assertEqual(status.broken_bonds, 0)
-        self.assertTrue(rospy.ServiceProxy("sim/unpause", Trigger)().success)  # and then it runs again
+        self.assertTrue(rospy.ServiceProxy("sim/unpause_checked", Trigger)().success)  # and then it runs again
 
 
 if __name__ == "__main__":

@@ -46,10 +46,13 @@ class NodeInterfaceTest(unittest.TestCase):
         rospy.Subscriber("sim/status", SimStatus, cls._on_status, queue_size=10)
         rospy.Subscriber("ice/cells", MarkerArray, cls._on_markers, queue_size=2)
         cls.command = rospy.Publisher("pusher/cmd_vel", Twist, queue_size=10)
-        for name in ("sim/pause", "sim/unpause", "sim/reset", "sim/step"):
+        for name in ("sim/pause", "sim/unpause", "sim/unpause_checked", "sim/reset", "sim/step"):
             rospy.wait_for_service(name, timeout=60.0)
+        # pause, unpause and reset are std_srvs/Empty, as Gazebo's; unpause_checked is the Trigger
+        # variant that answers why it refused.
         cls.pause = rospy.ServiceProxy("sim/pause", Empty)
-        cls.unpause = rospy.ServiceProxy("sim/unpause", Trigger)
+        cls.unpause = rospy.ServiceProxy("sim/unpause", Empty)
+        cls.unpause_checked = rospy.ServiceProxy("sim/unpause_checked", Trigger)
         cls.reset = rospy.ServiceProxy("sim/reset", Empty)
         cls.step = rospy.ServiceProxy("sim/step", Step)
         cls.tf_buffer = tf2_ros.Buffer()
@@ -158,7 +161,7 @@ class NodeInterfaceTest(unittest.TestCase):
 
     def test_05_pusher_stops_after_the_command_timeout(self):
         self.send(0.1, 0.5)
-        time.sleep(1.6)  # ~cmd_timeout is 1 s of wall time
+        time.sleep(1.6)  # ~cmd_timeout is 1 s of simulated time: many, as fast as the CPU runs
         self.assertEqual(self.latest_status().pusher_velocity, 0.0)
         x0, t0 = self.pusher_x()
         time.sleep(0.5)
@@ -191,7 +194,7 @@ class NodeInterfaceTest(unittest.TestCase):
         self.assertEqual(status.sim_time, 0.0)
         self.assertEqual(status.pushed_length, 0.0)
         self.assertEqual(status.broken_bonds, 0)
-        self.assertTrue(self.unpause().success)
+        self.assertTrue(self.unpause_checked().success)
         self.assertFalse(self.latest_status().paused)
 
     def test_07_loads_become_nonzero_when_the_ice_reaches_the_structure(self):
@@ -203,6 +206,36 @@ class NodeInterfaceTest(unittest.TestCase):
         self.wait_for(loaded, 240.0, "a horizontal load above 1 N")
         self.wait_for(lambda: self.latest_status().broken_bonds > 0, 120.0, "broken bonds")
         self.assertEqual(self.latest_status().last_error, "")
+
+
+    def test_08_paused_as_gazebo_clock_goes_on_commands_wait_and_step_publishes_every_period(self):
+        # A rig stepping with its controller in the loop: while paused /clock goes on (frozen), a
+        # command waits out any wall time (~cmd_timeout counts simulated time), and a step of
+        # 0.2 s publishes the wrench of each of its 20 load periods (100 Hz), stamped in order.
+        self.pause()
+        time.sleep(0.3)
+        with self.lock:
+            first = len(self.clocks)
+        time.sleep(1.0)
+        with self.lock:
+            frozen = self.clocks[first:]
+        self.assertGreaterEqual(len(frozen), 5, "about 10 /clock messages a second while paused")
+        self.assertEqual(len(set(frozen)), 1, "the clock is frozen while paused")
+        self.command.publish(self._twist(0.05))
+        time.sleep(1.6)  # more than ~cmd_timeout (1 s) of wall time, no simulated time
+        with self.lock:
+            before = len(self.wrenches)
+        answer = self.step(steps=0, duration=0.2)
+        self.assertTrue(answer.success, answer.message)
+        self.assertAlmostEqual(self.latest_status().pusher_velocity, 0.05, delta=1e-9)
+        time.sleep(0.5)
+        with self.lock:
+            stamps = [w.header.stamp.to_sec() for w in self.wrenches[before:]]
+        self.assertGreaterEqual(len(stamps), 20, "one wrench per load period of the step")
+        self.assertEqual(stamps, sorted(stamps))
+        self.assertAlmostEqual(stamps[-1] - stamps[-20], 0.19, delta=TIME_STEP + 1e-9)
+        self.unpause()
+        self.assertFalse(self.latest_status().paused)
 
 
 if __name__ == "__main__":

@@ -20,6 +20,9 @@
 namespace thin_ice {
 namespace {
 
+/// [s of wall time] between two "falling behind" warnings.
+constexpr double kBehindWarningPeriod = 10.0;
+
 /// Where bare scenario names are looked up (the package's config/scenarios, set by CMake).
 const std::string kScenarioDir = THIN_ICE_SCENARIO_DIR;
 
@@ -149,6 +152,7 @@ NodeSettings readNodeSettings(const ros::NodeHandle& pnh) {
   readParam(pnh, "status_rate", s.status_rate);
   readParam(pnh, "publish_clock", s.publish_clock);
   readParam(pnh, "cmd_timeout", s.cmd_timeout);
+  readParam(pnh, "paused_clock_rate", s.paused_clock_rate);
   readParam(pnh, "max_pusher_speed", s.max_pusher_speed);
   readParam(pnh, "max_steps_per_call", s.max_steps_per_call);
   readParam(pnh, "paused", s.start_paused);
@@ -163,7 +167,9 @@ NodeSettings readNodeSettings(const ros::NodeHandle& pnh) {
                " Hz of simulated time (each load period is simulated in one call that nothing interrupts)");
   requireRange("marker_rate", s.marker_rate, l.min_wall_rate, l.max_wall_rate, false, " Hz");
   requireRange("status_rate", s.status_rate, l.min_wall_rate, l.max_wall_rate, false, " Hz");
-  requireRange("cmd_timeout", s.cmd_timeout, l.min_cmd_timeout, l.max_cmd_timeout, true, " s (0: never)");
+  requireRange("cmd_timeout", s.cmd_timeout, l.min_cmd_timeout, l.max_cmd_timeout, true,
+               " s of simulated time (0: never)");
+  requireRange("paused_clock_rate", s.paused_clock_rate, l.min_wall_rate, l.max_wall_rate, false, " Hz");
   requireRange("max_pusher_speed", s.max_pusher_speed, l.min_pusher_speed, l.max_pusher_speed, false, " m/s");
   requireRange("max_steps_per_call", static_cast<double>(s.max_steps_per_call), 1.0, l.max_steps_per_call, false,
                " time steps");
@@ -198,6 +204,7 @@ SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   command_sub_ = nh_.subscribe("pusher/cmd_vel", 10, &SimNode::onCommand, this);
   pause_srv_ = nh_.advertiseService("sim/pause", &SimNode::onPause, this);
   unpause_srv_ = nh_.advertiseService("sim/unpause", &SimNode::onUnpause, this);
+  unpause_checked_srv_ = nh_.advertiseService("sim/unpause_checked", &SimNode::onUnpauseChecked, this);
   reset_srv_ = nh_.advertiseService("sim/reset", &SimNode::onReset, this);
   step_srv_ = nh_.advertiseService("sim/step", &SimNode::onStep, this);
   publishStructureTransform();
@@ -216,16 +223,17 @@ void SimNode::onCommand(const geometry_msgs::Twist& command) {
                       accepted);
   }
   command_velocity_ = accepted;
-  command_time_ = ros::WallTime::now();
+  command_sim_time_ = sim_->time();
   have_command_ = true;
   command_expired_ = false;
 }
 
 double SimNode::commandedVelocity() {
   if (!have_command_) return sim_->params().pusher.velocity;
-  if (settings_.cmd_timeout > 0.0 && (ros::WallTime::now() - command_time_).toSec() > settings_.cmd_timeout) {
+  if (settings_.cmd_timeout > 0.0 && sim_->time() - command_sim_time_ > settings_.cmd_timeout) {
     if (!command_expired_) {
-      ROS_WARN("thin_ice_sim: no pusher command for %.3g s (~cmd_timeout): pusher stopped", settings_.cmd_timeout);
+      ROS_WARN("thin_ice_sim: no pusher command for %.3g s of simulated time (~cmd_timeout): pusher stopped",
+               settings_.cmd_timeout);
       command_expired_ = true;
     }
     return 0.0;
@@ -238,19 +246,29 @@ bool SimNode::onPause(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
   return true;
 }
 
-bool SimNode::onUnpause(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
+std::string SimNode::unpause() {
   if (!sim_->healthy()) {
-    // Answered, not failed: a failed call reaches the client as an exception without the reason.
-    response.success = false;
-    response.message = "cannot unpause after a numerical blow-up (" + sim_->lastError() + "); call sim/reset";
-    ROS_WARN("thin_ice_sim: %s", response.message.c_str());
-    return true;
+    const std::string why = "cannot unpause after a numerical blow-up (" + sim_->lastError() + "); call sim/reset";
+    ROS_WARN("thin_ice_sim: %s", why.c_str());
+    publishStatus();  // paused, with last_error: what a client of the Empty service can read
+    return why;
   }
   sim_->resume();
   rtf_window_start_ = ros::WallTime::now();
   rtf_window_sim_start_ = sim_->time();
-  response.success = true;
-  response.message = "running";
+  return "";
+}
+
+bool SimNode::onUnpause(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
+  unpause();
+  return true;  // as Gazebo: the call succeeds; a refusal is in the log and in sim/status
+}
+
+bool SimNode::onUnpauseChecked(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response) {
+  // Answered, not failed: a failed call reaches the client as an exception without the reason.
+  const std::string why = unpause();
+  response.success = why.empty();
+  response.message = why.empty() ? "running" : why;
   return true;
 }
 
@@ -285,19 +303,28 @@ bool SimNode::onStep(thin_ice_sim::Step::Request& request, thin_ice_sim::Step::R
     response.message = msg.str();
   } else {
     const long steps = static_cast<long>(wanted);
-    if (steps > 0) {
-      sim_->setPusherVelocity(applied_velocity_ = commandedVelocity());
-      sim_->step(steps);
-      checkHealth();
-      publishLoads();
-      publishClockAndTf();
-    }
+    if (steps > 0) stepPublishingEachPeriod(steps);
     response.success = sim_->healthy();
     response.message = sim_->healthy() ? "stepped " + std::to_string(steps) + " steps" : sim_->lastError();
   }
   response.sim_time = sim_->time();
   publishStatus();
   return true;
+}
+
+void SimNode::stepPublishingEachPeriod(long steps) {
+  // Steps of one load period: 1/load_rate of simulated time, at least one step.
+  const long per_period = std::max(1L, std::lround(1.0 / (settings_.load_rate * sim_->timeStep())));
+  for (long left = steps; left > 0 && sim_->healthy();) {
+    const long now = std::min(left, per_period);
+    sim_->setPusherVelocity(applied_velocity_ = commandedVelocity());
+    sim_->step(now);
+    left -= now;
+    checkHealth();
+    if (!sim_->healthy()) break;
+    publishLoads();
+    publishClockAndTf();
+  }
 }
 
 void SimNode::checkHealth() {
@@ -413,6 +440,13 @@ void SimNode::run() {
     if (sim_->paused()) {
       was_paused = true;
       achieved_rtf_ = 0.0;
+      // The frozen clock goes on, as Gazebo's: a node on simulated time started now has a time.
+      if (settings_.publish_clock && now >= next_paused_clock_time_) {
+        rosgraph_msgs::Clock clock;
+        clock.clock = ros::Time(sim_->time());
+        clock_pub_.publish(clock);
+        next_paused_clock_time_ = now + ros::WallDuration(1.0 / settings_.paused_clock_rate);
+      }
       ros::WallDuration(0.005).sleep();
       continue;
     }
@@ -424,7 +458,7 @@ void SimNode::run() {
     advanceAndPublish();
     if (settings_.stop_time > 0.0 && sim_->time() >= settings_.stop_time - 1e-12) {
       publishStatus();
-      ROS_WARN("thin_ice_sim: reached ~stop_time = %.6g s of simulated time: shutting down", settings_.stop_time);
+      ROS_INFO("thin_ice_sim: reached ~stop_time = %.6g s of simulated time: finished", settings_.stop_time);
       ros::shutdown();
       break;
     }
@@ -435,9 +469,13 @@ void SimNode::run() {
       achieved_rtf_ = (sim_->time() - rtf_window_sim_start_) / window;
       rtf_window_start_ = after;
       rtf_window_sim_start_ = sim_->time();
-      if (settings_.real_time_factor > 0.0 && achieved_rtf_ < 0.9 * settings_.real_time_factor) {
-        ROS_WARN_THROTTLE(10.0, "thin_ice_sim: falling behind: real-time factor %.3g of the %.3g asked for",
-                          achieved_rtf_, settings_.real_time_factor);
+      // Throttled on wall time: ROS_WARN_THROTTLE counts ros::Time, which under use_sim_time is
+      // this node's own slow clock (at 0.05x real time it said nothing for minutes).
+      if (settings_.real_time_factor > 0.0 && achieved_rtf_ < 0.9 * settings_.real_time_factor &&
+          (last_behind_warning_.isZero() || (after - last_behind_warning_).toSec() >= kBehindWarningPeriod)) {
+        ROS_WARN("thin_ice_sim: falling behind: real-time factor %.3g of the %.3g asked for", achieved_rtf_,
+                 settings_.real_time_factor);
+        last_behind_warning_ = after;
       }
     }
     if (settings_.real_time_factor > 0.0) {

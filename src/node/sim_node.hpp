@@ -29,7 +29,10 @@ struct NodeSettings {
   double marker_rate = 10.0;            ///< ~marker_rate [Hz of wall time]
   double status_rate = 10.0;            ///< ~status_rate [Hz of wall time]
   bool publish_clock = true;            ///< ~publish_clock
-  double cmd_timeout = 1.0;             ///< ~cmd_timeout [s wall]; 0 = commands never expire
+  double cmd_timeout = 1.0;             ///< ~cmd_timeout [s simulated]; 0 = commands never expire.
+                                        ///< Simulated, so that a command waits out a pause and
+                                        ///< sim/step with a controller in the loop keeps it
+  double paused_clock_rate = 10.0;      ///< ~paused_clock_rate [Hz wall]: /clock (frozen) while paused
   double max_pusher_speed = 0.5;        ///< ~max_pusher_speed [m/s]; the scenario's pusher.velocity too
   long max_steps_per_call = 100000;     ///< ~max_steps_per_call: sim/step refuses a longer request
   bool start_paused = false;            ///< ~paused
@@ -45,8 +48,9 @@ struct NodeSettings {
 struct NodeLimits {
   double min_real_time_factor = 1e-3, max_real_time_factor = 1e6;  ///< [-] (0 also allowed)
   double min_load_rate = 1.0, max_load_rate = 1e5;        ///< [Hz of simulated time]
-  double min_wall_rate = 0.01, max_wall_rate = 1e3;       ///< [Hz of wall time] markers, status
-  double min_cmd_timeout = 1e-3, max_cmd_timeout = 1e6;   ///< [s wall] (0 also allowed)
+  double min_wall_rate = 0.01, max_wall_rate = 1e3;       ///< [Hz of wall time] markers, status,
+                                                          ///< the paused /clock
+  double min_cmd_timeout = 1e-3, max_cmd_timeout = 1e6;   ///< [s simulated] (0 also allowed)
   double min_pusher_speed = 1e-6, max_pusher_speed = 10.0;  ///< [m/s] ~max_pusher_speed; the health
                                                             ///< check stops any cell at 50 m/s
   double max_steps_per_call = 1e8;                        ///< [-] upper bound of ~max_steps_per_call
@@ -68,16 +72,24 @@ class SimNode {
  private:
   void onCommand(const geometry_msgs::Twist& command);
   bool onPause(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
-  /// Runs the simulation again; after a numerical blow-up it answers success = false and why.
-  bool onUnpause(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response);
+  /// sim/unpause, std_srvs/Empty as Gazebo's: runs the simulation again; after a numerical blow-up
+  /// it stays paused, says why in the log and in sim/status (last_error), and answers all the same.
+  bool onUnpause(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
+  /// sim/unpause_checked, std_srvs/Trigger: the same, with success = false and the reason.
+  bool onUnpauseChecked(std_srvs::Trigger::Request&, std_srvs::Trigger::Response& response);
+  /// Runs the simulation again unless it blew up; returns "" or why not.
+  std::string unpause();
   bool onReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&);
   bool onStep(thin_ice_sim::Step::Request& request, thin_ice_sim::Step::Response& response);
 
   /// Pusher velocity for the next step: the scenario's until the first command, then the last
-  /// command until it is older than cmd_timeout, then zero.
+  /// command until it is older than cmd_timeout of simulated time, then zero.
   double commandedVelocity();
   /// Advances one load period (or less while paused: nothing) and publishes what is due.
   void advanceAndPublish();
+  /// Steps `steps` time steps in load periods, publishing each period's loads, clock and tf as
+  /// the running node does (sim/step); stops early on a blow-up.
+  void stepPublishingEachPeriod(long steps);
   void publishLoads();
   void publishClockAndTf();
   void publishStatus();
@@ -91,19 +103,20 @@ class SimNode {
   std::unique_ptr<Simulation> sim_;
   ros::Publisher wrench_pub_, panels_pub_, markers_pub_, status_pub_, clock_pub_;
   ros::Subscriber command_sub_;
-  ros::ServiceServer pause_srv_, unpause_srv_, reset_srv_, step_srv_;
+  ros::ServiceServer pause_srv_, unpause_srv_, unpause_checked_srv_, reset_srv_, step_srv_;
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;
 
   bool have_command_ = false;
   bool command_expired_ = false;
   double command_velocity_ = 0.0;       ///< [m/s] last accepted command
-  ros::WallTime command_time_;          ///< when it arrived
+  double command_sim_time_ = 0.0;       ///< [s simulated] when it arrived
   double applied_velocity_ = 0.0;       ///< [m/s] used in the last step
   double achieved_rtf_ = 0.0;           ///< simulated s per wall s over the last second
   ros::WallTime rtf_window_start_;
   double rtf_window_sim_start_ = 0.0;
-  ros::WallTime next_marker_time_, next_status_time_;
+  ros::WallTime next_marker_time_, next_status_time_, next_paused_clock_time_;
+  ros::WallTime last_behind_warning_;   ///< the "falling behind" warning is throttled on wall time
   std::string last_error_;
 };
 

@@ -2,7 +2,7 @@
 // listens to the structure load and commands the pusher so that the (smoothed) horizontal load
 // stays near a set point, like a load-controlled rig.
 //   subscribes structure/wrench (geometry_msgs/WrenchStamped), publishes pusher/cmd_vel (Twist)
-//   ~set_point [N] (default 300), ~proportional_gain [m/s per N] (default 2e-4),
+//   ~set_point [N] (default 150, as launch/rig_example.launch), ~proportional_gain [m/s per N] (default 2e-4),
 //   ~integral_gain [m/s per N s] (default 4e-4), ~time_constant [s of simulated time] of the
 //   load filter (default 0.05), ~max_speed and ~min_speed [m/s] (defaults 0.2 and -0.05: the
 //   rig may back off slowly, which a jammed sheet needs to shed load)
@@ -52,7 +52,7 @@ class RigController {
     command_pub_.publish(command);
   }
 
-  double set_point_ = 300.0;          // [N]
+  double set_point_ = 150.0;          // [N] the one default, launch/rig_example.launch's too
   double proportional_gain_ = 2e-4;   // [m/s per N]
   double integral_gain_ = 4e-4;       // [m/s per N s]
   double time_constant_ = 0.05;       // [s]
