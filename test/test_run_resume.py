@@ -113,7 +113,24 @@ def main():
         summary["scenario"]["file"] = "config/scenarios/not_here.yaml"
         with open(os.path.join(elsewhere, "summary.json"), "w") as f:
             json.dump(summary, f, indent=2)
-        before = {d: contents(d) for d in (split, corrupt, no_checkpoint, elsewhere, floating, no_bottom)}
+        # A damaged checkpoint (one flipped bit in the contents) and damaged records (a row deleted
+        # at the start, one in the middle) are refused before anything is appended.
+        flipped, no_first_row, no_middle_row = (os.path.join(tmp, d) for d in ("flipped", "no_first_row", "no_middle_row"))
+        for d in (flipped, no_first_row, no_middle_row):
+            shutil.copytree(split, d)
+        with open(os.path.join(flipped, "checkpoint.bin"), "r+b") as f:
+            f.seek(200)
+            byte = f.read(1)[0]
+            f.seek(200)
+            f.write(bytes([byte ^ 0x01]))
+        for d, row in ((no_first_row, 1), (no_middle_row, 10)):
+            with open(os.path.join(d, "loads.csv")) as f:
+                lines = f.readlines()
+            del lines[row]  # lines[0] is the header
+            with open(os.path.join(d, "loads.csv"), "w") as f:
+                f.writelines(lines)
+        before = {d: contents(d) for d in (split, corrupt, no_checkpoint, elsewhere, floating, no_bottom, flipped,
+                                           no_first_row, no_middle_row)}
         cases = [(["--resume", split, "--until-time", "0.8"], "already at t = 0.8"),
                  (["--resume", split, "--until-time", "1", "--out", tmp], "give none of them"),
                  # what a run under way cannot change: the mesh (spaces around the key too), the time
@@ -136,6 +153,9 @@ def main():
                  (["--resume", no_bottom, "--until-time", "1", "--set", "bottom.depth=0.5"],
                   "the run has no false bottom (bottom.enabled: false)"),
                  (["--resume", corrupt, "--until-time", "1"], "truncated"),
+                 (["--resume", flipped, "--until-time", "1"], "the checksum does not match the contents"),
+                 (["--resume", no_first_row, "--until-time", "1"], "row 1 (t = 0.04 s) comes 0.04 s after t = 0"),
+                 (["--resume", no_middle_row, "--until-time", "1"], "row 10 (t = 0.22 s) comes 0.04 s after the row"),
                  (["--resume", no_checkpoint, "--until-time", "1"], "has no checkpoint.bin"),
                  (["--resume", elsewhere, "--until-time", "1"], "relative to the directory the run was started from"),
                  (scenario + ["--until-time", "1", "--out", tmp, "--accept-changed-scenario"], "with --resume DIR only"),
@@ -244,7 +264,7 @@ def main():
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("OK: resumed runs identical to the run in one go (from the second row boundary after a short row); "
-          "an override switched on at a resumption; eighteen bad requests refused with exit status 2, and a scenario file "
+          "an override switched on at a resumption; twenty-one bad requests refused with exit status 2, and a scenario file "
           "stiffened past the run's time step refused as that; a deeper false bottom taken")
 
 

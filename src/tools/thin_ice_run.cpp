@@ -573,6 +573,20 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
     cont.load = history.load;
     cont.first_failure_length = thin_ice::firstFailureLength(history.pushed_length, history.broken_bonds);
     cont.rows = static_cast<long>(cont.length.size());
+    // Rows come one output interval apart (or closer: a short row at an earlier target), from
+    // the first interval on: a row deleted at the start or in the middle leaves a wider gap, which
+    // would stay in the history and its statistics.
+    const double interval = summary.output_interval;  // [s]
+    for (std::size_t k = 0; k < history.time.size(); ++k) {
+      const double previous = k == 0 ? 0.0 : history.time[k - 1];
+      const double gap = history.time[k] - previous;
+      if (!(gap > 0.0) || gap > interval * (1.0 + 1e-6) + 1e-9) {
+        throw ResumeError(csv_path + ": row " + std::to_string(k + 1) + " (t = " + jsonNumber(history.time[k]) +
+                          " s) comes " + jsonNumber(gap) + " s after " + (k == 0 ? "t = 0" : "the row before it") +
+                          "; allowed: more than 0 and at most the output interval, " + jsonNumber(interval) +
+                          " s (a row is missing or out of order: the record is damaged)");
+      }
+    }
     if (cont.rows > 0) {
       cont.last.time = history.time.back();
       cont.last.pushed_length = history.pushed_length.back();
