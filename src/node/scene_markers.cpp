@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 
 namespace thin_ice {
 namespace {
@@ -52,7 +53,7 @@ void addQuad(visualization_msgs::Marker& m, const geometry_msgs::Point& a, const
 }  // namespace
 
 visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const std::string& frame,
-                                                 const ros::Time& stamp) {
+                                                 const ros::Time& stamp, double real_time_factor) {
   const Params& p = sim.params();
   const double half_h = 0.5 * p.ice.thickness;
   visualization_msgs::MarkerArray array;
@@ -94,11 +95,15 @@ visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const st
   visualization_msgs::Marker structure = baseMarker(frame, stamp, "structure", visualization_msgs::Marker::TRIANGLE_LIST);
   structure.color = colour(0.55, 0.55, 0.6);
   addQuad(structure, point(x_low, y0, z_low), point(x_low, y1, z_low), point(x_high, y1, z_high), point(x_high, y0, z_high));
+  array.markers.push_back(structure);
+  // The side panels translucent, so that they do not hide the face and the pile from the side.
+  visualization_msgs::Marker panels = baseMarker(frame, stamp, "side_panels", visualization_msgs::Marker::TRIANGLE_LIST);
+  panels.color = colour(0.55, 0.55, 0.6, 0.3);
   for (const double y : {y0, y1}) {
-    addQuad(structure, point(s.toe_x - s.side_panel_length, y, z_low), point(x_high, y, z_low),
+    addQuad(panels, point(s.toe_x - s.side_panel_length, y, z_low), point(x_high, y, z_low),
             point(x_high, y, z_high), point(s.toe_x - s.side_panel_length, y, z_high));
   }
-  array.markers.push_back(structure);
+  array.markers.push_back(panels);
 
   const double lane = p.channel.enabled ? p.channel.width : p.sheet.width;
   visualization_msgs::Marker pusher = baseMarker(frame, stamp, "pusher", visualization_msgs::Marker::CUBE);
@@ -119,6 +124,27 @@ visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const st
     bottom.color = colour(0.45, 0.35, 0.25, 0.8);
     array.markers.push_back(bottom);
   }
+  // A readout above the structure and a legend beside it, facing the camera; text height scaled
+  // with the lane so that it reads at full width and on a 1 m strip alike.
+  const double text_height = std::max(0.06, 0.025 * lane);  // [m]
+  const LoadSample l = sim.loads();
+  char readout[256];
+  std::snprintf(readout, sizeof readout,
+                "t %.2f s   L %.3f m   F_cal %.0f N   real time x%.3g   broken bonds %d of %d", sim.time(),
+                sim.pushedLength(), p.structure.calibration_factor * l.horizontal_raw, real_time_factor,
+                l.broken_bonds, l.broken_bonds + l.intact_bonds);
+  visualization_msgs::Marker text = baseMarker(frame, stamp, "readout", visualization_msgs::Marker::TEXT_VIEW_FACING);
+  text.pose.position = point(x_high, 0.0, z_high + 3.0 * text_height);
+  text.scale.z = text_height;
+  text.text = readout;
+  array.markers.push_back(text);
+  visualization_msgs::Marker legend = baseMarker(frame, stamp, "legend", visualization_msgs::Marker::TEXT_VIEW_FACING);
+  legend.pose.position = point(x_high, 0.0, z_high + 1.5 * text_height);
+  legend.scale.z = 0.7 * text_height;
+  legend.color = colour(0.85, 0.85, 0.85);
+  legend.text = "pale: intact sheet   blue to red: broken ice, top 0 to 0.3 m above water   "
+                "orange: pusher   brown: false bottom";
+  array.markers.push_back(legend);
   return array;
 }
 

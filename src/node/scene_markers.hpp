@@ -11,10 +11,12 @@
 
 namespace thin_ice {
 
-/// Marker namespaces: "cells" (triangle list), "outlines" (line list), "structure", "pusher",
-/// "bottom". Cells are drawn at their top surface; intact sheet light grey-blue, broken pieces
-/// coloured by the height of their top above the waterline (blue at 0, red at 0.3 m and above).
+/// Marker namespaces: "cells" (triangle list), "outlines" (line list), "structure" (the face),
+/// "side_panels" (translucent), "pusher", "bottom", "readout" (t, L, F_cal, the real-time factor
+/// given, broken bonds) and "legend" (text). Cells are drawn at their top surface; intact sheet
+/// light grey-blue, broken pieces coloured by the height of their top above the waterline (blue at
+/// 0, red at 0.3 m and above).
 visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const std::string& frame,
-                                                 const ros::Time& stamp);
+                                                 const ros::Time& stamp, double real_time_factor);
 
 }  // namespace thin_ice

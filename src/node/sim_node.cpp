@@ -416,7 +416,7 @@ void SimNode::publishStatus() {
 
 void SimNode::publishMarkers() {
   if (markers_pub_.getNumSubscribers() == 0) return;
-  markers_pub_.publish(makeSceneMarkers(*sim_, settings_.world_frame, ros::Time(sim_->time())));
+  markers_pub_.publish(makeSceneMarkers(*sim_, settings_.world_frame, ros::Time(sim_->time()), achieved_rtf_));
 }
 
 void SimNode::run() {
