@@ -9,6 +9,8 @@ period of a step publishes its wrench, and the load settles near the set point a
 case (rig_example.test: the mean over each 0.5 s window after 2 s within +-50 % of it). Then
 sim/unpause (std_srvs/Empty) runs it, and sim/reset takes it back to t = 0.
 """
+import os
+import sys
 import threading
 import time
 import unittest
@@ -22,11 +24,10 @@ from std_srvs.srv import Empty
 from thin_ice_sim.msg import SimStatus
 from thin_ice_sim.srv import Step
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from rig_band import END, assert_load_in_band  # noqa: E402
+
 STEP = 0.05     # [s] of simulated time per sim/step call
-END = 4.0       # [s] of simulated time stepped
-SETTLE = 2.0    # [s] before the band applies
-WINDOW = 0.5    # [s] per mean
-BAND = 0.5      # relative half-width of the band
 
 
 class RigSteppedTest(unittest.TestCase):
@@ -74,15 +75,7 @@ class RigSteppedTest(unittest.TestCase):
         self.assertGreaterEqual(len(data), int(END * 100) - 1, "one wrench per load period of every step")
         self.assertGreater(len(sent), calls, "the controller answered the wrenches")
         self.assertNotEqual(status["last"].pusher_velocity, 0.0, "the command expired between steps")
-        start = SETTLE
-        while start + WINDOW <= END + 1e-9:
-            window = [f for t, f in data if start <= t < start + WINDOW]
-            self.assertTrue(window, "no samples in [%.2f, %.2f) s" % (start, start + WINDOW))
-            mean = sum(window) / len(window)
-            self.assertLess(abs(mean - set_point), BAND * set_point,
-                            "mean load %.1f N in [%.2f, %.2f) s is outside %.0f N +- %.0f %%"
-                            % (mean, start, start + WINDOW, set_point, 100 * BAND))
-            start += WINDOW
+        assert_load_in_band(self, data, set_point)
 
         # sim/unpause (Empty) runs it; sim/reset takes it back to t = 0.
         unpause()

@@ -151,46 +151,15 @@ VerticalStressModel toVerticalStress(const YAML::Node& n) {
   throw BadValue(describe(n));
 }
 
-VerticalSlipFrictionModel toVerticalSlipFriction(const YAML::Node& n) {
-  const std::string& s = plainScalar(n);
-  if (s == "level_only") return VerticalSlipFrictionModel::kLevelOnly;
-  if (s == "edge_face") return VerticalSlipFrictionModel::kEdgeFace;
-  throw BadValue(describe(n));
-}
-
-FailureCompressionModel toFailureCompression(const YAML::Node& n) {
-  const std::string& s = plainScalar(n);
-  if (s == "current") return FailureCompressionModel::kCurrent;
-  if (s == "strength") return FailureCompressionModel::kStrength;
-  throw BadValue(describe(n));
-}
-
-BondSmoothingModel toBondSmoothing(const YAML::Node& n) {
-  const std::string& s = plainScalar(n);
-  if (s == "force") return BondSmoothingModel::kForce;
-  if (s == "strength") return BondSmoothingModel::kStrength;
-  throw BadValue(describe(n));
-}
-
-ContactFaceModel toContactFace(const YAML::Node& n) {
-  const std::string& s = plainScalar(n);
-  if (s == "overlap") return ContactFaceModel::kOverlap;
-  if (s == "thickness") return ContactFaceModel::kThickness;
-  throw BadValue(describe(n));
-}
-
-VerticalContactDepthModel toVerticalContactDepth(const YAML::Node& n) {
-  const std::string& s = plainScalar(n);
-  if (s == "vertical_overlap") return VerticalContactDepthModel::kVerticalOverlap;
-  if (s == "shallower") return VerticalContactDepthModel::kShallower;
-  throw BadValue(describe(n));
-}
-
-CurvatureFailureScope toCurvatureFailureScope(const YAML::Node& n) {
-  const std::string& s = plainScalar(n);
-  if (s == "all") return CurvatureFailureScope::kAll;
-  if (s == "sheet") return CurvatureFailureScope::kSheet;
-  throw BadValue(describe(n));
+/// The conversion of a key that names one of two readings: `first` or `second`.
+template <class Reading>
+auto eitherOf(const char* first, Reading first_value, const char* second, Reading second_value) {
+  return [=](const YAML::Node& n) {
+    const std::string& s = plainScalar(n);
+    if (s == first) return first_value;
+    if (s == second) return second_value;
+    throw BadValue(describe(n));
+  };
 }
 
 SeedLayout toLayout(const YAML::Node& n) {
@@ -255,18 +224,25 @@ const std::vector<Section>& sections() {
         field(&P::ice, &IceParams::vertical_stress, "vertical_stress", "shear, bending or plate",
               toVerticalStress, kRequired),
         field(&P::ice, &IceParams::failure_compression, "failure_compression", "current or strength",
-              toFailureCompression, false),
-        field(&P::ice, &IceParams::bond_smoothing, "bond_smoothing", "force or strength", toBondSmoothing, false),
-        field(&P::ice, &IceParams::contact_face, "contact_face", "overlap or thickness", toContactFace, false),
+              eitherOf("current", FailureCompressionModel::kCurrent, "strength", FailureCompressionModel::kStrength),
+              false),
+        field(&P::ice, &IceParams::bond_smoothing, "bond_smoothing", "force or strength",
+              eitherOf("force", BondSmoothingModel::kForce, "strength", BondSmoothingModel::kStrength), false),
+        field(&P::ice, &IceParams::contact_face, "contact_face", "overlap or thickness",
+              eitherOf("overlap", ContactFaceModel::kOverlap, "thickness", ContactFaceModel::kThickness), false),
         field(&P::ice, &IceParams::vertical_contact_depth, "vertical_contact_depth", "vertical_overlap or shallower",
-              toVerticalContactDepth, false),
+              eitherOf("vertical_overlap", VerticalContactDepthModel::kVerticalOverlap, "shallower",
+                       VerticalContactDepthModel::kShallower),
+              false),
         flag(&P::ice, &IceParams::curvature_failure, "curvature_failure"),
         field(&P::ice, &IceParams::curvature_failure_scope, "curvature_failure_scope", "all or sheet",
-              toCurvatureFailureScope, false),
+              eitherOf("all", CurvatureFailureScope::kAll, "sheet", CurvatureFailureScope::kSheet), false),
         flag(&P::ice, &IceParams::plate_bending, "plate_bending"),
         number(&P::ice, &IceParams::friction_ice_ice, "friction_ice_ice"),
         field(&P::ice, &IceParams::vertical_slip_friction, "vertical_slip_friction", "level_only or edge_face",
-              toVerticalSlipFriction, false),
+              eitherOf("level_only", VerticalSlipFrictionModel::kLevelOnly, "edge_face",
+                       VerticalSlipFrictionModel::kEdgeFace),
+              false),
         number(&P::ice, &IceParams::contact_damping_ratio, "contact_damping_ratio"),
         number(&P::ice, &IceParams::bond_damping_ratio, "bond_damping_ratio")}},
       {"sheet",
