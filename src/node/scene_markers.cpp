@@ -93,7 +93,7 @@ visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const st
   const double x_low = structureFaceX(s, z_low), x_high = structureFaceX(s, z_high);
   const double y0 = -0.5 * s.width, y1 = 0.5 * s.width;
   visualization_msgs::Marker structure = baseMarker(frame, stamp, "structure", visualization_msgs::Marker::TRIANGLE_LIST);
-  structure.color = colour(0.55, 0.55, 0.6);
+  structure.color = colour(0.55, 0.55, 0.6, 0.6);  // the load arrow at the toe shows through
   addQuad(structure, point(x_low, y0, z_low), point(x_low, y1, z_low), point(x_high, y1, z_high), point(x_high, y0, z_high));
   array.markers.push_back(structure);
   // The side panels translucent, so that they do not hide the face and the pile from the side.
@@ -126,12 +126,17 @@ visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const st
   }
   // A readout above the structure and a legend beside it, facing the camera; text height scaled
   // with the lane so that it reads at full width and on a 1 m strip alike.
-  const double text_height = std::max(0.06, 0.025 * lane);  // [m]
+  const double text_height = std::max(0.1, 0.03 * lane);  // [m]
   const LoadSample l = sim.loads();
+  char pace[32];
+  if (sim.paused()) {
+    std::snprintf(pace, sizeof pace, "paused");
+  } else {
+    std::snprintf(pace, sizeof pace, "%.3gx real time", real_time_factor);
+  }
   char readout[256];
-  std::snprintf(readout, sizeof readout,
-                "t %.2f s   L %.3f m   F_cal %.0f N   real time x%.3g   broken bonds %d of %d", sim.time(),
-                sim.pushedLength(), p.structure.calibration_factor * l.horizontal_raw, real_time_factor,
+  std::snprintf(readout, sizeof readout, "t %.2f s   L %.3f m   F_cal %.0f N   %s   broken bonds %d of %d",
+                sim.time(), sim.pushedLength(), p.structure.calibration_factor * l.horizontal_raw, pace,
                 l.broken_bonds, l.broken_bonds + l.intact_bonds);
   visualization_msgs::Marker text = baseMarker(frame, stamp, "readout", visualization_msgs::Marker::TEXT_VIEW_FACING);
   text.pose.position = point(x_high, 0.0, z_high + 3.0 * text_height);
