@@ -16,6 +16,7 @@ THIN_ICE_APT_PACKAGES="catkin ros-message-generation ros-message-runtime \
   libroscpp-dev ros-std-msgs libstd-msgs-dev ros-geometry-msgs libgeometry-msgs-dev \
   ros-visualization-msgs libvisualization-msgs-dev ros-std-srvs libstd-srvs-dev \
   ros-rosgraph-msgs libros-rosgraph-msgs-dev \
+  libdynamic-reconfigure-config-init-mutex-dev python3-dynamic-reconfigure \
   libtf2-dev libtf2-ros-dev libtf2-geometry-msgs-dev libtf2-eigen-dev \
   python3-roslaunch python3-rosmaster rosout python3-rostest librostest-dev \
   python3-rosbag librosbag-dev rosbash rospack-tools python3-rostopic python3-rosnode \

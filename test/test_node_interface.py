@@ -238,5 +238,20 @@ class NodeInterfaceTest(unittest.TestCase):
         self.assertFalse(self.latest_status().paused)
 
 
+    def test_09_limits_and_pacing_change_at_run_time(self):
+        # dynamic_reconfigure: a lower speed limit clamps the next command; a real-time factor
+        # outside the start-up range (1e-4: between 0 and 1e-3) is refused and nothing changes.
+        import dynamic_reconfigure.client
+        client = dynamic_reconfigure.client.Client("thin_ice_sim", timeout=30)
+        self.assertAlmostEqual(client.update_configuration({"max_pusher_speed": 0.1})["max_pusher_speed"], 0.1)
+        self.send(0.3, 0.3)
+        self.assertAlmostEqual(self.latest_status().pusher_velocity, 0.1, delta=1e-9)
+        answered = client.update_configuration({"real_time_factor": 1e-4})
+        self.assertEqual(answered["real_time_factor"], 0.0, "a refused value is answered with the one kept")
+        client.update_configuration({"max_pusher_speed": 0.5})
+        self.send(0.3, 0.3)
+        self.assertAlmostEqual(self.latest_status().pusher_velocity, 0.3, delta=1e-9)
+
+
 if __name__ == "__main__":
     rostest.rosrun("thin_ice_sim", "node_interface", NodeInterfaceTest)

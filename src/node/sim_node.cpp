@@ -208,6 +208,57 @@ SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   reset_srv_ = nh_.advertiseService("sim/reset", &SimNode::onReset, this);
   step_srv_ = nh_.advertiseService("sim/step", &SimNode::onStep, this);
   publishStructureTransform();
+  // Started with the values checked above (the server would otherwise begin at the .cfg defaults).
+  reconfigure_ = std::make_unique<dynamic_reconfigure::Server<thin_ice_sim::SimConfig>>(private_nh_);
+  thin_ice_sim::SimConfig now;
+  now.real_time_factor = settings_.real_time_factor;
+  now.max_pusher_speed = settings_.max_pusher_speed;
+  now.cmd_timeout = settings_.cmd_timeout;
+  now.marker_rate = settings_.marker_rate;
+  reconfigure_->updateConfig(now);
+  reconfigure_->setCallback([this](thin_ice_sim::SimConfig& c, uint32_t level) { onReconfigure(c, level); });
+}
+
+void SimNode::onReconfigure(thin_ice_sim::SimConfig& config, uint32_t) {
+  const NodeLimits& l = kNodeLimits;
+  NodeSettings wanted = settings_;
+  wanted.real_time_factor = config.real_time_factor;
+  wanted.max_pusher_speed = config.max_pusher_speed;
+  wanted.cmd_timeout = config.cmd_timeout;
+  wanted.marker_rate = config.marker_rate;
+  try {
+    requireRange("real_time_factor", wanted.real_time_factor, l.min_real_time_factor, l.max_real_time_factor, true,
+                 " (0: as fast as possible)");
+    requireRange("max_pusher_speed", wanted.max_pusher_speed, l.min_pusher_speed, l.max_pusher_speed, false, " m/s");
+    requireRange("cmd_timeout", wanted.cmd_timeout, l.min_cmd_timeout, l.max_cmd_timeout, true,
+                 " s of simulated time (0: never)");
+    requireRange("marker_rate", wanted.marker_rate, l.min_wall_rate, l.max_wall_rate, false, " Hz");
+    if (std::fabs(sim_->params().pusher.velocity) > wanted.max_pusher_speed && !have_command_) {
+      throw std::invalid_argument("~max_pusher_speed = " + std::to_string(wanted.max_pusher_speed) +
+                                  " m/s is below the scenario's pusher.velocity, which drives the pusher until the "
+                                  "first command");
+    }
+  } catch (const std::invalid_argument& e) {
+    ROS_WARN("thin_ice_sim: reconfigure refused, nothing changed: %s", e.what());
+    config.real_time_factor = settings_.real_time_factor;
+    config.max_pusher_speed = settings_.max_pusher_speed;
+    config.cmd_timeout = settings_.cmd_timeout;
+    config.marker_rate = settings_.marker_rate;
+    return;
+  }
+  if (wanted.real_time_factor != settings_.real_time_factor) {
+    // Pacing starts again from here, as after a pause.
+    rtf_window_start_ = ros::WallTime::now();
+    rtf_window_sim_start_ = sim_->time();
+    repace_ = true;
+  }
+  settings_ = wanted;
+  if (have_command_ && std::fabs(command_velocity_) > settings_.max_pusher_speed) {
+    command_velocity_ = std::copysign(settings_.max_pusher_speed, command_velocity_);
+  }
+  ROS_INFO("thin_ice_sim: reconfigured: real_time_factor %.3g, max_pusher_speed %.3g m/s, cmd_timeout %.3g s, "
+           "marker_rate %.3g Hz", settings_.real_time_factor, settings_.max_pusher_speed, settings_.cmd_timeout,
+           settings_.marker_rate);
 }
 
 void SimNode::onCommand(const geometry_msgs::Twist& command) {
@@ -450,7 +501,8 @@ void SimNode::run() {
       ros::WallDuration(0.005).sleep();
       continue;
     }
-    if (was_paused) {  // pacing restarts after a pause, a reset or the first step
+    if (was_paused || repace_) {  // pacing restarts after a pause, a reset, the first step or a new factor
+      repace_ = false;
       pace_start = now;
       pace_sim_start = sim_->time();
       was_paused = false;

@@ -3,6 +3,7 @@
 // simulation is never touched from two threads.
 #pragma once
 
+#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
 #include <std_srvs/Empty.h>
@@ -14,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "thin_ice_sim/SimConfig.h"
 #include "thin_ice_sim/Step.h"
 #include "thin_ice_sim/simulation.hpp"
 
@@ -97,6 +99,10 @@ class SimNode {
   void publishStructureTransform();
   /// Checks the simulation after a step: on a blow-up, pause and report.
   void checkHealth();
+  /// dynamic_reconfigure: the pacing, the pusher's speed limit, the command timeout and the marker
+  /// rate change from the next step; a value outside the start-up checks is refused with a warning
+  /// and the old one stays.
+  void onReconfigure(thin_ice_sim::SimConfig& config, uint32_t level);
 
   ros::NodeHandle nh_, private_nh_;
   NodeSettings settings_;
@@ -106,6 +112,7 @@ class SimNode {
   ros::ServiceServer pause_srv_, unpause_srv_, unpause_checked_srv_, reset_srv_, step_srv_;
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;
+  std::unique_ptr<dynamic_reconfigure::Server<thin_ice_sim::SimConfig>> reconfigure_;
 
   bool have_command_ = false;
   bool command_expired_ = false;
@@ -117,6 +124,7 @@ class SimNode {
   double rtf_window_sim_start_ = 0.0;
   ros::WallTime next_marker_time_, next_status_time_, next_paused_clock_time_;
   ros::WallTime last_behind_warning_;   ///< the "falling behind" warning is throttled on wall time
+  bool repace_ = false;                 ///< the real-time factor changed: pacing starts again
   std::string last_error_;
 };
 

@@ -5,15 +5,20 @@
 //   ~set_point [N] (default 150, as launch/rig_example.launch), ~proportional_gain [m/s per N] (default 2e-4),
 //   ~integral_gain [m/s per N s] (default 4e-4), ~time_constant [s of simulated time] of the
 //   load filter (default 0.05), ~max_speed and ~min_speed [m/s] (defaults 0.2 and -0.05: the
-//   rig may back off slowly, which a jammed sheet needs to shed load)
+//   rig may back off slowly, which a jammed sheet needs to shed load); the set point and the two
+//   gains also through dynamic_reconfigure (cfg/RigController.cfg)
 // The law, a PI controller on the low-passed load e = F_set - F_filtered, at each load sample:
 //   I = clamp(I + k_i e dt, min_speed, max_speed),  v = clamp(I + k_p e, min_speed, max_speed).
+#include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/Twist.h>
 #include <geometry_msgs/WrenchStamped.h>
 #include <ros/ros.h>
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
+
+#include "thin_ice_sim/RigControllerConfig.h"
 
 namespace {
 
@@ -30,6 +35,20 @@ class RigController {
     command_pub_ = nh.advertise<geometry_msgs::Twist>("pusher/cmd_vel", 10);
     load_sub_ = nh.subscribe("structure/wrench", 50, &RigController::onLoad, this);
     ROS_INFO("rig_controller: holding the horizontal load near %.1f N", set_point_);
+    // The set point and the gains change at run time (dynamic_reconfigure), from the values above.
+    reconfigure_ = std::make_unique<dynamic_reconfigure::Server<thin_ice_sim::RigControllerConfig>>(pnh);
+    thin_ice_sim::RigControllerConfig now;
+    now.set_point = set_point_;
+    now.proportional_gain = proportional_gain_;
+    now.integral_gain = integral_gain_;
+    reconfigure_->updateConfig(now);
+    reconfigure_->setCallback([this](thin_ice_sim::RigControllerConfig& c, uint32_t) {
+      set_point_ = c.set_point;
+      proportional_gain_ = c.proportional_gain;
+      integral_gain_ = c.integral_gain;
+      ROS_INFO("rig_controller: set point %.1f N, k_p %.3g m/s per N, k_i %.3g m/s per N s", set_point_,
+               proportional_gain_, integral_gain_);
+    });
   }
 
  private:
@@ -64,6 +83,7 @@ class RigController {
   bool have_sample_ = false;
   ros::Publisher command_pub_;
   ros::Subscriber load_sub_;
+  std::unique_ptr<dynamic_reconfigure::Server<thin_ice_sim::RigControllerConfig>> reconfigure_;
 };
 
 }  // namespace
