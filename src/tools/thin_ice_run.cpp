@@ -28,11 +28,8 @@
 // request delivered twice, as GNU timeout does).
 #include <unistd.h>
 
-#include <csignal>
-#include <ctime>
 
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -50,6 +47,7 @@
 #include <vector>
 
 #include "progress_line.hpp"
+#include "stop_signal.hpp"
 #include "thin_ice_sim/openmp_wait_policy.hpp"
 #include "resume_switch.hpp"
 #include "thin_ice_sim/built_backends.hpp"
@@ -246,36 +244,6 @@ struct RunResult {
   int interrupted_by = 0;            // the signal that stopped the run early, 0 if none
 };
 
-/// The signal that asked the run to stop (0: none). The handler only records it; the stepping
-/// loop looks at it after each output interval. Any thread (OpenMP's included) may take the
-/// signal, so it is a lock-free atomic rather than a volatile sig_atomic_t.
-std::atomic<int> g_stop_signal{0};
-static_assert(std::atomic<int>::is_always_lock_free, "the signal handler needs a lock-free atomic");
-
-/// [ns] CLOCK_MONOTONIC at the first stop signal.
-std::atomic<long long> g_first_stop_ns{0};
-static_assert(std::atomic<long long>::is_always_lock_free, "the signal handler needs a lock-free atomic");
-
-/// A repeat within this time [ns] of the first signal is the same request delivered twice: GNU
-/// timeout (a wall budget) sends its signal to the command and then to its own process group, which
-/// holds the command too. Seen on 2026-12-04: 6 of 14 strip runs under `timeout -s TERM` died at
-/// the second delivery and left only loads.csv.partial.
-constexpr long long kRepeatedDeliveryNs = 1000000000LL;
-
-extern "C" void requestStop(int signal_number) {
-  timespec now{};
-  clock_gettime(CLOCK_MONOTONIC, &now);  // async-signal-safe
-  const long long now_ns = static_cast<long long>(now.tv_sec) * 1000000000LL + now.tv_nsec;
-  int none = 0;
-  if (g_stop_signal.compare_exchange_strong(none, signal_number)) {
-    g_first_stop_ns.store(now_ns);
-    return;
-  }
-  if (now_ns - g_first_stop_ns.load() < kRepeatedDeliveryNs) return;
-  std::signal(signal_number, SIG_DFL);  // a second request ends the process at once
-  std::raise(signal_number);
-}
-
 RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& cont) {
   RunResult r;
   r.length = cont.length;
@@ -358,7 +326,7 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
     r.load.push_back(r.last.horizontal_calibrated);
     if (std::isinf(r.first_failure_length) && r.last.broken_bonds > 0) r.first_failure_length = r.last.pushed_length;
     // A signal in the interval that reached the target changes nothing: the run is complete.
-    r.interrupted_by = stepsLeft() > 0 ? g_stop_signal.load() : 0;
+    r.interrupted_by = stepsLeft() > 0 ? thin_ice_tools::stopSignal() : 0;
     const bool last_row = stepsLeft() <= 0 || r.interrupted_by != 0;
     left = r.interrupted_by != 0 ? 0 : stepsLeft();
     const double wall = std::chrono::duration<double>(Clock::now() - start).count();
@@ -688,8 +656,7 @@ int main(int argc, char** argv) {
   try {
     const double setup_wall = std::chrono::duration<double>(Clock::now() - setup_start).count();
     std::filesystem::create_directories(options.out + (options.snapshots > 0 ? "/snapshots" : ""));
-    std::signal(SIGINT, requestStop);
-    std::signal(SIGTERM, requestStop);
+    thin_ice_tools::stopOnSigintAndSigterm();
     const RunResult result = runSimulation(*sim, options, continuation);
     if (continuation.active && !result.error.empty()) {
       std::fprintf(stderr, "thin_ice_run: the resumed segment became unhealthy; %s is left as it was (its rows are in "
