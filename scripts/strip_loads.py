@@ -1,0 +1,42 @@
+"""A run's load record per metre of structure width, for the strip tools (scripts/strip_table,
+scripts/strip_vs_full): one reader and one set of window means."""
+import csv
+import json
+import math
+import os
+
+
+def read_run(path):
+    """(summary or None, lengths [m], raw horizontal loads [N], last row). A run killed before it
+    wrote its summary still has its rows in loads.csv.partial (written row by row): those are read,
+    and the summary is None."""
+    summary = None
+    if os.path.exists(os.path.join(path, "summary.json")):
+        with open(os.path.join(path, "summary.json")) as f:
+            summary = json.load(f)
+    loads = os.path.join(path, "loads.csv")
+    if not os.path.exists(loads) and os.path.exists(loads + ".partial"):
+        loads += ".partial"
+    lengths, raw, last = [], [], None
+    with open(loads) as f:
+        for row in csv.DictReader(f):
+            lengths.append(float(row["pushed_length_m"]))
+            raw.append(float(row["horizontal_raw_N"]))
+            last = row
+    return summary, lengths, raw, last
+
+
+def window_means(lengths, values, window, windows=None):
+    """[(begin, mean)] of `values` over [k window, (k + 1) window) of pushed length: the whole
+    windows the record covers, or the first `windows` of them (the last one taking a final row at
+    its end)."""
+    count = windows if windows is not None else (int(math.floor(lengths[-1] / window)) if lengths else 0)
+    sums, counts = [0.0] * count, [0] * count
+    for length, value in zip(lengths, values):
+        k = int(math.floor(length / window))
+        if windows is not None:
+            k = min(k, count - 1)
+        if 0 <= k < count:
+            sums[k] += value
+            counts[k] += 1
+    return [(k * window, sums[k] / counts[k] if counts[k] else float("nan")) for k in range(count)]
