@@ -167,12 +167,15 @@ TIS_HD PairForce demContactForce(const PolygonOverlap& overlap, const BodyState&
   // and 0.2 m cells: above any friction coefficient, so with Z every edge contact slid vertically.
   const double stiffness_v = k_v * c.vertical_modulus * area / h;
   const double side = dz > 0.0 ? 1.0 : (dz < 0.0 ? -1.0 : 0.0);
-  const double depth_v = c.vertical_contact_depth == kVerticalDepthShallower
-                             ? minOf(overlap_z, area / overlap.chord_length)
-                             : overlap_z;
-  double vertical = stiffness_v * depth_v;
+  double vertical = stiffness_v * overlap_z;
   if (side != 0.0) {
     vertical -= 2.0 * c.damping_ratio * sqrt(stiffness_v * reduced_mass) * side * (j.vz - i.vz);
+    // The shallower depth as a correction after the printed law, not a depth selected before it:
+    // the printed law's products then round as they did before the key existed (a selected depth
+    // changed a fused multiply-add, and the committed runs no longer reproduced to the bit).
+    if (c.vertical_contact_depth == kVerticalDepthShallower) {
+      vertical -= stiffness_v * (overlap_z - minOf(overlap_z, area / overlap.chord_length));
+    }
     if (vertical < 0.0) vertical = 0.0;
   } else {
     vertical = 0.0;
