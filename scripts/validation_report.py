@@ -573,7 +573,10 @@ def main():
              "(from the end of that failure's collapse: the pile begins there) to the start of the steady window;",
              "its error is given only where there is a steady window.",
              f"Targets (issue #6): {TARGETS}.", "",
-             f"Every run in the tables below is of the scenarios as they stand (ice.vertical_slip_friction: {READING}). "
+             "The full-width runs in the tables below are of the reading before phase 2 (E_v from the floating-plate "
+             "length, alpha = 1); the scenarios now carry the phase-2 reading (E_v four times that, alpha = 0.63), "
+             "whose runs are in \"Phase 2\" below and take these tables' place as they reach length. "
+             f"Within the tables the reading is ice.vertical_slip_friction: {READING}. "
              f"The runs made before that key entered them (level_only, until 2026-12-02) are in docs/validation/{ARCHIVE}/ "
              "and in their own section further down." if archived else "", "",
              ]

@@ -96,47 +96,6 @@ TEST(Contact, VerticalForceIsEquation3) {
   EXPECT_NEAR(f.force_on_j.x, 0.6 * 9e8 / 0.7 * 0.03 * 1e-3, 1e-6 * 23142.9);
 }
 
-TEST(Contact, AsPrintedTheHorizontalForceActsOverTheThicknessWhateverTheOffset) {
-  // ice.contact_face = thickness, j 0.02 m higher (K_n = 0.6 for n = 1): Eq. (1) x h^3,
-  // F_n = 0.6 (9e8/0.7) 0.05 1e-3 = 38571.4 N (over the face 0.03 m high: 23142.9 N); F_v of
-  // Eq. (3) is unchanged, 92571.4 N. A piece lying on another (j 0.049 m higher, K_n = 0.02,
-  // Z = 1 mm, S/L = 1 mm) gets 0.02 (9e8/0.7) 0.05 1e-3 = 1285.7 N, against
-  // 0.02 (9e8/0.7) 1e-3 1e-3 = 25.7 N with the overlap.
-  ContactConstants c = iceContact();
-  c.contact_face = kFaceThickness;
-  const PairForce f = squaresOneMillimetreIn(0.02, c);
-  EXPECT_NEAR(f.force_on_j.x, 0.6 * 9e8 / 0.7 * 0.05 * 1e-3, 1e-6 * 38571.4);
-  EXPECT_NEAR(f.fz_on_j, 0.6 * 0.03 * 9e8 / 0.7 * 2e-4 / 0.05, 1e-6 * 92571.4);
-  const PairForce lying = squaresOneMillimetreIn(0.049, c);
-  EXPECT_NEAR(lying.force_on_j.x, 0.02 * 9e8 / 0.7 * 0.05 * 1e-3, 1e-6 * 1285.7);
-  const PairForce lying_on_overlap = squaresOneMillimetreIn(0.049, iceContact());
-  EXPECT_NEAR(lying_on_overlap.force_on_j.x, 0.02 * 9e8 / 0.7 * 1e-3 * 1e-3, 1e-6 * 25.7);
-  // Level cells: the two readings are one law.
-  const PairForce level = squaresOneMillimetreIn(0.0, c), level_overlap = squaresOneMillimetreIn(0.0, iceContact());
-  EXPECT_EQ(level.force_on_j.x, level_overlap.force_on_j.x);
-}
-
-TEST(Contact, WithTheShallowerDepthTheVerticalForceOfSlabsSideBySideIsSmall) {
-  // ice.vertical_contact_depth = shallower, j 0.02 m higher and 1 mm into i (Z = 0.03 m, S/L =
-  // 1 mm): F_v = K_v E_v' (S/h) min(Z, S/L) = 0.6 (9e8/0.7) (2e-4/0.05) 1e-3 = 3085.7 N, against
-  // 92571.4 N with Z; F_n is unchanged (23142.9 N).
-  ContactConstants c = iceContact();
-  c.vertical_contact_depth = kVerticalDepthShallower;
-  const PairForce side_by_side = squaresOneMillimetreIn(0.02, c);
-  EXPECT_NEAR(side_by_side.fz_on_j, 0.6 * 9e8 / 0.7 * 2e-4 / 0.05 * 1e-3, 1e-6 * 3085.7);
-  EXPECT_NEAR(side_by_side.force_on_j.x, 0.6 * 9e8 / 0.7 * 0.03 * 1e-3, 1e-6 * 23142.9);
-  // A slab lying on another: j half over i (S = 0.02 m^2, L = 0.2 m, S/L = 0.1 m) and 0.045 m
-  // higher (Z = 5 mm, K_v = 0.1): Z is the shallower, so F_v = 0.1 (9e8/0.7) (0.02/0.05) 5e-3
-  // = 257142.9 N either way.
-  const auto a = square({0.0, 0.0}, 0.2), b = square({0.1, 0.0}, 0.2);
-  const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
-  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-  const BodyState j = {{0.1, 0.0}, 0.045, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-  const double stacked = 0.1 * 9e8 / 0.7 * 0.02 / 0.05 * 5e-3;
-  EXPECT_NEAR(demContactForce(o, i, j, c, kNoReference).fz_on_j, stacked, 1e-6 * stacked);
-  EXPECT_NEAR(demContactForce(o, i, j, iceContact(), kNoReference).fz_on_j, stacked, 1e-6 * stacked);
-}
-
 TEST(Contact, HorizontalAndVerticalExponentsActApart) {
   // As above with n = 2 for K_n and n = 1 for K_v: K_n = 0.6^2 = 0.36, K_v = 0.6, so
   // F_n = 0.36 (9e8/0.7) 0.03 1e-3 = 13885.7 N and F_v = 92571.4 N as before.

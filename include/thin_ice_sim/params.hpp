@@ -41,20 +41,6 @@ enum class BondSmoothingModel {
               ///< K_n sigma_comp (pure compression): "the degradation of bond strength" (Section 2.3)
 };
 
-/// What height the horizontal contact force of Eq. (1) acts over (issue #31, reading b).
-enum class ContactFaceModel {
-  kOverlap,    ///< the vertical overlap Z of Eq. (2), depth min(S/L, Z), crushing cap sigma_c Z L
-  kThickness,  ///< Eq. (1) as printed (x h^3): the face h, depth S/L, crushing cap sigma_c h L
-};
-
-/// What penetration depth the vertical contact force of Eq. (3) takes.
-enum class VerticalContactDepthModel {
-  kVerticalOverlap,  ///< Z of Eq. (2), whatever the horizontal overlap (as printed)
-  kShallower,        ///< the shallower of Z and S/L: two slabs side by side overlap by S/L across,
-                     ///< so are separated across, not up and down (deviation 1 of Eq. (1), applied
-                     ///< to Eq. (3) too)
-};
-
 /// Which bonds the curvature criterion (ice.curvature_failure) checks (beyond the paper:
 /// physics/sheet_curvature.hpp, docs/model.md "Curvature failure").
 enum class CurvatureFailureScope {
@@ -79,10 +65,6 @@ struct IceParams {
   FailureCompressionModel failure_compression = FailureCompressionModel::kCurrent;
   /// What K_n, K_v of Eq. (6) scale in a bond: its springs or its strength.
   BondSmoothingModel bond_smoothing = BondSmoothingModel::kForce;
-  /// The face height of Eq. (1): the vertical overlap Z or the thickness h.
-  ContactFaceModel contact_face = ContactFaceModel::kOverlap;
-  /// The penetration depth of Eq. (3): Z, or the shallower of Z and S/L.
-  VerticalContactDepthModel vertical_contact_depth = VerticalContactDepthModel::kVerticalOverlap;
   /// Also break a bond when the plate stress of the sheet's curvature across it, E h |kappa| /
   /// (2 (1 - nu^2)), exceeds Eq. (13)'s threshold (beyond the paper: physics/sheet_curvature.hpp).
   bool curvature_failure = false;

@@ -42,10 +42,7 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
                ice.compressive_strength,
                ice.contact_damping_ratio,
                regularisation,
-               verticalSlipFrictionReading(ice.vertical_slip_friction),
-               ice.contact_face == ContactFaceModel::kThickness ? kFaceThickness : kFaceOverlap,
-               ice.vertical_contact_depth == VerticalContactDepthModel::kShallower ? kVerticalDepthShallower
-                                                                                   : kVerticalDepthOverlap};
+               verticalSlipFrictionReading(ice.vertical_slip_friction)};
   c.bond = {h,
             ice.smoothing_exponent_h,
             ice.smoothing_exponent_v,

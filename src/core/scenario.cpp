@@ -8,7 +8,6 @@
 //   Enums:    ice.vertical_stress: shear | bending | plate;  sheet.layout: jittered_grid | poisson_disk;
 //             ice.vertical_slip_friction: level_only | edge_face;  ice.curvature_failure_scope: all | sheet
 //             ice.failure_compression: current | strength;  ice.bond_smoothing: force | strength
-//             ice.contact_face: overlap | thickness;  ice.vertical_contact_depth: vertical_overlap | shallower
 //   Integers: structure.panels, sheet.lloyd_iterations, numerics.max_steps_between_rebuilds,
 //             numerics.structure_substeps,
 //             numerics.threads (signed), sheet.seed (unsigned 64 bit); decimal digits only.
@@ -228,12 +227,6 @@ const std::vector<Section>& sections() {
               false),
         field(&P::ice, &IceParams::bond_smoothing, "bond_smoothing", "force or strength",
               eitherOf("force", BondSmoothingModel::kForce, "strength", BondSmoothingModel::kStrength), false),
-        field(&P::ice, &IceParams::contact_face, "contact_face", "overlap or thickness",
-              eitherOf("overlap", ContactFaceModel::kOverlap, "thickness", ContactFaceModel::kThickness), false),
-        field(&P::ice, &IceParams::vertical_contact_depth, "vertical_contact_depth", "vertical_overlap or shallower",
-              eitherOf("vertical_overlap", VerticalContactDepthModel::kVerticalOverlap, "shallower",
-                       VerticalContactDepthModel::kShallower),
-              false),
         flag(&P::ice, &IceParams::curvature_failure, "curvature_failure"),
         field(&P::ice, &IceParams::curvature_failure_scope, "curvature_failure_scope", "all or sheet",
               eitherOf("all", CurvatureFailureScope::kAll, "sheet", CurvatureFailureScope::kSheet), false),
@@ -313,11 +306,30 @@ const Section& findSection(const std::string& name, const std::string& where) {
   throw ScenarioError(where + "unknown section '" + printable(name) + "'; allowed:" + allowed);
 }
 
+/// Keys that readings of the paper once had and that the runs rejected (their evidence is in
+/// docs/model.md, "Readings tried and rejected"): a file or a run record naming one is told so.
+struct RetiredKey {
+  const char* section;
+  const char* key;
+  const char* why;
+};
+constexpr RetiredKey kRetiredKeys[] = {
+    {"ice", "contact_face", "Eq. (1) with the face h shattered the sheet (issue #31, reading b)"},
+    {"ice", "vertical_contact_depth",
+     "the depth min(Z, S/L) of Eq. (3) served only E_v = E, which the runs rejected (issue #31)"},
+};
+
 const Field& findField(const Section& section, const std::string& key, const std::string& where) {
   std::string allowed;
   for (const Field& f : section.fields) {
     if (f.key == key) return f;
     allowed += " " + f.key;
+  }
+  for (const RetiredKey& r : kRetiredKeys) {
+    if (section.name == r.section && key == r.key) {
+      throw ScenarioError(where + "key '" + section.name + "." + key + "' was removed: " + r.why +
+                          "; docs/model.md, \"Readings tried and rejected\"");
+    }
   }
   throw ScenarioError(where + "unknown key '" + printable(key) + "' in section '" + section.name +
                       "'; allowed:" + allowed);

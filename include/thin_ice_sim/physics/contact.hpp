@@ -5,8 +5,7 @@
 //                                         d = min(S/L, Z): S/L is the mean overlap depth, so this
 //                                         is a planar contact of stiffness (3E/(1-nu)) Z per metre
 //   F_v = K_v(z) Z (3E_v/(1-nu)) S/h       Eq. (3), Z = max(0, h - |z_j - z_i|) (Eq. 2), pushing
-//                                         the cells apart vertically (zero when level); with
-//                                         ice.vertical_contact_depth = shallower, min(Z, S/L) for Z
+//                                         the cells apart vertically (zero when level)
 //   both act at the overlap centroid; the yaw moment is (point - centroid) x F (Eq. 4).
 // Added, as every DEM needs: normal damping (ratio zeta of critical, never attractive) and
 // regularised Coulomb friction against the slip at the contact point; between cells at
@@ -48,18 +47,6 @@ enum VerticalSlipFriction : int {
   kVerticalSlipEdgeFace = 1,
 };
 
-/// What height the horizontal force of Eq. (1) acts over (issue #31, reading b).
-enum ContactFaceReading : int {
-  kFaceOverlap = 0,    ///< the vertical overlap Z; depth min(S/L, Z); cap sigma_c Z L (this project's)
-  kFaceThickness = 1,  ///< the thickness h, as printed; depth S/L; cap sigma_c h L
-};
-
-/// What penetration depth the vertical force of Eq. (3) takes (issue #31, E_v).
-enum VerticalContactDepthReading : int {
-  kVerticalDepthOverlap = 0,    ///< Z of Eq. (2), as printed
-  kVerticalDepthShallower = 1,  ///< min(Z, S/L): two slabs side by side are separated across
-};
-
 struct ContactConstants {
   double thickness;             ///< h [m]
   double plane_modulus;         ///< 3E/(1-nu) [Pa], Eq. (1)
@@ -72,8 +59,6 @@ struct ContactConstants {
   double damping_ratio;         ///< zeta [-]
   double regularisation_speed;  ///< [m/s]
   int vertical_slip_friction;   ///< a VerticalSlipFriction: what resists vertical slip between offset cells
-  int contact_face;             ///< a ContactFaceReading: the face height of Eq. (1), Z or h
-  int vertical_contact_depth;   ///< a VerticalContactDepthReading: the depth of Eq. (3), Z or min(Z, S/L)
 };
 
 /// What a contact law needs of one body.
@@ -150,32 +135,21 @@ TIS_HD PairForce demContactForce(const PolygonOverlap& overlap, const BodyState&
 
   // Eq. (1) x h^3 with the contact face h high replaced by the vertical overlap Z of Eq. (2):
   // two slabs at different heights touch over Z, not h (equal at dz = 0); the depth is the
-  // shallower of S/L and Z. Damping of stiffness k = K_n E' Z.
-  // As printed (kFaceThickness) the face is h high and the depth is S/L.
+  // shallower of S/L and Z. Damping of stiffness k = K_n E' Z. (The face h and depth S/L as
+  // printed shattered the sheet: docs/model.md, "Readings tried and rejected".)
   const double overlap_z = maxOf(0.0, h - fabs(dz));
-  const bool printed_face = c.contact_face == kFaceThickness;
-  const double face = printed_face ? h : overlap_z;
-  const double stiffness_h = k_h * c.plane_modulus * face;
-  const double depth = printed_face ? area / overlap.chord_length : minOf(area / overlap.chord_length, overlap_z);
+  const double stiffness_h = k_h * c.plane_modulus * overlap_z;
+  const double depth = minOf(area / overlap.chord_length, overlap_z);
   double normal = stiffness_h * depth;
   normal -= 2.0 * c.damping_ratio * sqrt(stiffness_h * reduced_mass) * approach;
-  normal = minOf(maxOf(normal, 0.0), c.crushing_strength * face * overlap.chord_length);
+  normal = minOf(maxOf(normal, 0.0), c.crushing_strength * overlap_z * overlap.chord_length);
 
-  // Eqs. (2)-(3), with damping of stiffness K_v E_v' S / h. With kVerticalDepthShallower the depth
-  // is the shallower of Z and S/L: at an edge contact of nearly level cells (Z ~ h, S/L of
-  // millimetres) F_v / F_n is then (E_v/E) S/h^2 instead of (E_v/E) L/h, which is 3.8 for E_v = E
-  // and 0.2 m cells: above any friction coefficient, so with Z every edge contact slid vertically.
+  // Eqs. (2)-(3), with damping of stiffness K_v E_v' S / h.
   const double stiffness_v = k_v * c.vertical_modulus * area / h;
   const double side = dz > 0.0 ? 1.0 : (dz < 0.0 ? -1.0 : 0.0);
   double vertical = stiffness_v * overlap_z;
   if (side != 0.0) {
     vertical -= 2.0 * c.damping_ratio * sqrt(stiffness_v * reduced_mass) * side * (j.vz - i.vz);
-    // The shallower depth as a correction after the printed law, not a depth selected before it:
-    // the printed law's products then round as they did before the key existed (a selected depth
-    // changed a fused multiply-add, and the committed runs no longer reproduced to the bit).
-    if (c.vertical_contact_depth == kVerticalDepthShallower) {
-      vertical -= stiffness_v * (overlap_z - minOf(overlap_z, area / overlap.chord_length));
-    }
     if (vertical < 0.0) vertical = 0.0;
   } else {
     vertical = 0.0;
