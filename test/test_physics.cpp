@@ -406,60 +406,6 @@ TEST(Bond, TheThreeReadingsOfTheVerticalStress) {
   EXPECT_NEAR(verticalBondStress(-100.0, b, law), 3.6e5, 1e-5);
 }
 
-TEST(Bond, WithTheCompressiveStrengthInEquation13TheVerticalThresholdIsConstant) {
-  // ice.failure_compression = strength: sigma_v > sigma_f - k sigma_comp whatever the bond carries.
-  // k = 0.5, sigma_comp = 130 kPa: threshold 100 - 65 = 35 kPa, with no compression at all.
-  // Shear reading, n = 1: sigma_v = K_v k_v dz / (h L_e) = (1 - dz/h) 1e4 dz / 0.01, so a bond
-  // offset by dz = 0.0375 m carries 0.25 * 1e4 * 0.0375 / 0.01 = 9375 Pa; one of k_v = 4e4 N/m
-  // 37.5 kPa (breaks), one of 3.6e4 N/m 33.75 kPa (holds). The present-compression reading keeps
-  // both (threshold sigma_f = 100 kPa).
-  BondRest b = unitBond();
-  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-  const BodyState j = {{0.2, 0.0}, 0.0375, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-  BondConstants law = bondLaw(0.5);
-  law.vertical_stress = kVerticalShear;
-  for (const double k_v : {4e4, 3.6e4}) {
-    b.k_vertical = k_v;
-    law.failure_compression = kCompressionStrength;
-    const BondForce printed = rmibBondForce(b, i, kNoTurn, j, kNoTurn, law);
-    EXPECT_NEAR(printed.sigma_v, 0.25 * k_v * 0.0375 / 0.01, 1e-6 * printed.sigma_v);
-    EXPECT_EQ(printed.sigma_c, 0.0);
-    EXPECT_EQ(printed.breaks, k_v > 3.8e4) << "k_v " << k_v;
-    law.failure_compression = kCompressionCurrent;
-    EXPECT_FALSE(rmibBondForce(b, i, kNoTurn, j, kNoTurn, law).breaks) << "k_v " << k_v;
-  }
-}
-
-TEST(Bond, WithTheSmoothingOnTheStrengthTheSpringsAreWholeAndTheThresholdsFall) {
-  // ice.bond_smoothing = strength, n = 1, j 0.02 m higher (K = 0.6) and pulled 5e-5 m along x:
-  // F_x on j = -k_n 5e-5 = -750 N (unsmoothed; K_n k_n u = -450 N with the smoothing on the force),
-  // sigma_h = 750 / (0.05 * 0.2) = 75 kPa, against K_n sigma_f = 60 kPa: it breaks. Smoothed on
-  // the force it carries 45 kPa < 100 kPa and holds. F_z on j = -k_v 0.02 = -200 N.
-  const BondRest b = unitBond();
-  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-  const BodyState j = {{0.2 + 5e-5, 0.0}, 0.02, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
-  BondConstants law = bondLaw(0.0);
-  law.vertical_stress = kVerticalShear;
-  law.bond_smoothing = kSmoothStrength;
-  const BondForce on_strength = rmibBondForce(b, i, kNoTurn, j, kNoTurn, law);
-  EXPECT_NEAR(on_strength.force_on_j.x, -b.k_normal * 5e-5, 1e-9 * 750.0);
-  EXPECT_NEAR(on_strength.fz_on_j, -b.k_vertical * 0.02, 1e-9 * 200.0);
-  EXPECT_NEAR(on_strength.sigma_h, 75e3, 1e-6 * 75e3);
-  EXPECT_TRUE(on_strength.breaks);
-  law.bond_smoothing = kSmoothForce;
-  const BondForce on_force = rmibBondForce(b, i, kNoTurn, j, kNoTurn, law);
-  EXPECT_NEAR(on_force.force_on_j.x, -0.6 * b.k_normal * 5e-5, 1e-9 * 450.0);
-  EXPECT_FALSE(on_force.breaks);
-  // The vertical threshold falls with K_v too: sigma_v = 200 / 0.01 = 20 kPa breaks a bond of
-  // sigma_f = 30 kPa at K_v = 0.6 (18 kPa) and holds at K_v = 1 (j level, pulled nowhere).
-  law.bond_smoothing = kSmoothStrength;
-  law.flexural_strength = 30e3;
-  EXPECT_TRUE(rmibBondForce(b, i, kNoTurn, BodyState{{0.2, 0.0}, 0.02, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia},
-                            kNoTurn, law).breaks);
-  EXPECT_FALSE(rmibBondForce(b, i, kNoTurn, BodyState{{0.2, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia},
-                             kNoTurn, law).breaks);
-}
-
 TEST(Bond, RigidTurnOfThePairGivesNoForce) {
   // Both cells turned by 0.3 rad about the bond's anchor point (the edge midpoint at x = 0.1):
   // nothing is stretched, so the force is zero (objectivity of du, n and the shear part).

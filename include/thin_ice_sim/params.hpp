@@ -25,22 +25,6 @@ enum class VerticalSlipFrictionModel {
                ///< (the default since 2026-12-02: docs/validation/calibration.md)
 };
 
-/// What sigma_comp of Eq. (13), sigma_v > sigma_f - k sigma_comp, stands for (issue #31, reading c).
-enum class FailureCompressionModel {
-  kCurrent,   ///< the bond's present compressive stress sigma_c (the paper's interpretation of k:
-              ///< the threshold reaches zero when the compression reaches the strength)
-  kStrength,  ///< the compressive strength, a constant: the threshold is sigma_f - k sigma_comp
-              ///< whatever the bond carries (Eq. 13 as printed, with Table 5's sigma_c)
-};
-
-/// What the smoothing functions K_n, K_v of Eq. (6) scale in a bond (issue #31, reading d).
-enum class BondSmoothingModel {
-  kForce,     ///< the springs: F_h = K_n k_n u_n, F_v = K_v k_v dz; thresholds sigma_f as printed
-  kStrength,  ///< the strength: the springs are unsmoothed, and the thresholds of Eq. (13) are
-              ///< K_n sigma_f (horizontal), K_v (sigma_f - k sigma_comp) (vertical) and
-              ///< K_n sigma_comp (pure compression): "the degradation of bond strength" (Section 2.3)
-};
-
 /// Which bonds the curvature criterion (ice.curvature_failure) checks (beyond the paper:
 /// physics/sheet_curvature.hpp, docs/model.md "Curvature failure").
 enum class CurvatureFailureScope {
@@ -61,10 +45,6 @@ struct IceParams {
   double smoothing_exponent_v = 1.0;    ///< n of K_v (Eq. 6) for vertical forces [-]
   double compression_coupling = 0.0;    ///< k of Eq. (13) [-]
   VerticalStressModel vertical_stress = VerticalStressModel::kBending;
-  /// sigma_comp of Eq. (13): the bond's present compression or the compressive strength.
-  FailureCompressionModel failure_compression = FailureCompressionModel::kCurrent;
-  /// What K_n, K_v of Eq. (6) scale in a bond: its springs or its strength.
-  BondSmoothingModel bond_smoothing = BondSmoothingModel::kForce;
   /// Also break a bond when the plate stress of the sheet's curvature across it, E h |kappa| /
   /// (2 (1 - nu^2)), exceeds Eq. (13)'s threshold (beyond the paper: physics/sheet_curvature.hpp).
   bool curvature_failure = false;

@@ -28,9 +28,6 @@ long long forceBlock(const Model& model, const BondRestColumns& r, int first, in
   if (kExponentCode != 0) {
     c.exponent_h = c.exponent_v = exponentOfCode(kExponentCode);
     c.vertical_stress = kReading;
-    // The specialised kernels serve the project's readings of Eq. (13) alone (kernelFor).
-    c.failure_compression = kCompressionCurrent;
-    c.bond_smoothing = kSmoothForce;
   }
   if (!kCurvature) c.curvature_stress_modulus = 0.0;  // and no gradient is read
   const int* __restrict bond_i = model.bond_i.data();
@@ -82,10 +79,7 @@ CpuBondPass::BlockKernel kernelFor(const BondConstants& c, bool& vectorised) {
   }
   const int reading = c.vertical_stress;
   const bool curvature = c.curvature_stress_modulus != 0.0;
-  // The readings of issue #31 under test (ice.failure_compression, ice.bond_smoothing) take the
-  // general kernel, so that the specialised ones keep them folded out of the hot loop.
-  const bool other_reading = c.failure_compression != kCompressionCurrent || c.bond_smoothing != kSmoothForce;
-  if (code == 0 || other_reading || reading < kVerticalShear || reading > kVerticalPlate) {
+  if (code == 0 || reading < kVerticalShear || reading > kVerticalPlate) {
     vectorised = false;
     return curvature ? &forceBlock<0, 0, true> : &forceBlock<0, 0, false>;
   }

@@ -51,10 +51,7 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
             ice.compression_coupling,
             verticalStressReading(ice.vertical_stress),
             floatingPlateMomentArm(ice.youngs_modulus, ice.poisson_ratio, h, p.water.density, p.water.gravity),
-            ice.curvature_failure ? plateStressPerCurvature(ice.youngs_modulus, ice.poisson_ratio, h) : 0.0,
-            ice.failure_compression == FailureCompressionModel::kStrength ? kCompressionStrength
-                                                                           : kCompressionCurrent,
-            ice.bond_smoothing == BondSmoothingModel::kStrength ? kSmoothStrength : kSmoothForce};
+            ice.curvature_failure ? plateStressPerCurvature(ice.youngs_modulus, ice.poisson_ratio, h) : 0.0};
   c.plate_bond_stiffness = ice.plate_bending ? plateBondStiffness(ice.youngs_modulus, ice.poisson_ratio, h) : 0.0;
   c.curvature_sheet_only =
       ice.curvature_failure && ice.curvature_failure_scope == CurvatureFailureScope::kSheet;

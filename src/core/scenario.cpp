@@ -7,7 +7,6 @@
 // ChannelParams, NumericsParams), plus an optional top-level `description:` text.
 //   Enums:    ice.vertical_stress: shear | bending | plate;  sheet.layout: jittered_grid | poisson_disk;
 //             ice.vertical_slip_friction: level_only | edge_face;  ice.curvature_failure_scope: all | sheet
-//             ice.failure_compression: current | strength;  ice.bond_smoothing: force | strength
 //   Integers: structure.panels, sheet.lloyd_iterations, numerics.max_steps_between_rebuilds,
 //             numerics.structure_substeps,
 //             numerics.threads (signed), sheet.seed (unsigned 64 bit); decimal digits only.
@@ -222,11 +221,6 @@ const std::vector<Section>& sections() {
         number(&P::ice, &IceParams::compression_coupling, "compression_coupling", kRequired),
         field(&P::ice, &IceParams::vertical_stress, "vertical_stress", "shear, bending or plate",
               toVerticalStress, kRequired),
-        field(&P::ice, &IceParams::failure_compression, "failure_compression", "current or strength",
-              eitherOf("current", FailureCompressionModel::kCurrent, "strength", FailureCompressionModel::kStrength),
-              false),
-        field(&P::ice, &IceParams::bond_smoothing, "bond_smoothing", "force or strength",
-              eitherOf("force", BondSmoothingModel::kForce, "strength", BondSmoothingModel::kStrength), false),
         flag(&P::ice, &IceParams::curvature_failure, "curvature_failure"),
         field(&P::ice, &IceParams::curvature_failure_scope, "curvature_failure_scope", "all or sheet",
               eitherOf("all", CurvatureFailureScope::kAll, "sheet", CurvatureFailureScope::kSheet), false),
@@ -317,6 +311,12 @@ constexpr RetiredKey kRetiredKeys[] = {
     {"ice", "contact_face", "Eq. (1) with the face h shattered the sheet (issue #31, reading b)"},
     {"ice", "vertical_contact_depth",
      "the depth min(Z, S/L) of Eq. (3) served only E_v = E, which the runs rejected (issue #31)"},
+    {"ice", "failure_compression",
+     "sigma_comp of Eq. (13) is the bond's present compression; the compressive strength there (issue #31, "
+     "reading c) changed the load within the seed spread, and with k ~ sigma_f/sigma_comp would leave no threshold"},
+    {"ice", "bond_smoothing",
+     "K of Eq. (6) scales the bond's springs, as Eqs. (1) and (3) write it; K on the strength (issue #31, "
+     "reading d) changed the load within the seed spread"},
 };
 
 const Field& findField(const Section& section, const std::string& key, const std::string& where) {

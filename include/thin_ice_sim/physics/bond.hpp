@@ -7,9 +7,7 @@
 //   Eq. (11-12) F_h = K_n(z) k_n u_n (tension > 0), F_s = k_s u_s, F_v = K_v(z) k_v dz
 //             k_n = E h L_e / d, k_s = G h L_e / d, k_v = G_v h L_e / d (bar of section h L_e)
 //   Eq. (13)  broken for good when sigma_v > sigma_f - k sigma_c, or sigma_h > sigma_f, or
-//             sigma_c > sigma_comp (ice.failure_compression = strength: sigma_f - k sigma_comp,
-//             the compressive strength; ice.bond_smoothing = strength: K scales these thresholds
-//             instead of the springs); sigma_h = F_h/(h L_e), sigma_c = max(0, -F_h)/(h L_e), sigma_v
+//             sigma_c > sigma_comp; sigma_h = F_h/(h L_e), sigma_c = max(0, -F_h)/(h L_e), sigma_v
 //             from F_v by the chosen reading (shear: |F_v|/(h L_e); bending: 6 M/(L_e h^2), M = |F_v| d/2;
 //             plate: 6 M/(L_e h^2), M = |F_v| e^(-pi/4) l, the floating plate's largest moment)
 //   Optional, beyond the paper (ice.curvature_failure): sigma_v is at least the plate stress of the
@@ -82,24 +80,6 @@ struct BondConstants {
   double plate_moment_arm;      ///< e^(-pi/4) l [m], used by kVerticalPlate
   /// E h / (2 (1 - nu^2)) [Pa m] with ice.curvature_failure, else 0: the curvature criterion is off.
   double curvature_stress_modulus;
-  /// A FailureCompressionReading: sigma_comp of Eq. (13) is the present compression or the strength.
-  int failure_compression;
-  /// A BondSmoothingReading: K_n, K_v of Eq. (6) scale the springs or the strength.
-  int bond_smoothing;
-};
-
-/// What sigma_comp in Eq. (13)'s vertical threshold sigma_f - k sigma_comp stands for.
-enum FailureCompressionReading : int {
-  kCompressionCurrent = 0,   ///< the bond's present compressive stress sigma_c
-  kCompressionStrength = 1,  ///< the compressive strength (a constant threshold, as printed)
-};
-
-/// What the smoothing functions of Eq. (6) scale in a bond ("controlling the degradation of bond
-/// strength with vertical offset", Section 2.3).
-enum BondSmoothingReading : int {
-  kSmoothForce = 0,     ///< the springs: F_h = K_n k_n u_n, F_v = K_v k_v dz
-  kSmoothStrength = 1,  ///< the thresholds: sigma_h > K_n sigma_f, sigma_v > K_v (sigma_f - k sigma_comp),
-                        ///< sigma_c > K_n sigma_comp, with unsmoothed springs
 };
 
 struct BondForce {
@@ -158,17 +138,16 @@ TIS_HD double verticalBondStress(double vertical_force, const BondRest& b, const
 /// Eq. (13) with the pure-compression limit of SPEC-NOTES, and torn through when the cells are
 /// offset vertically by the whole thickness (|dz| >= h: no face left in common; K_n = K_v = 0
 /// there, so Eq. (13) alone would keep such a bond, carrying shear, for ever).
-///   strength_h, strength_v: K_n and K_v when the smoothing scales the strength
-///   (kSmoothStrength), else 1.
+/// sigma_comp of Eq. (13)'s vertical threshold is the bond's present compression sigma_c (docs/model.md:
+/// with k ~ sigma_f / sigma_comp, the paper's reading of k, a constant compressive strength there
+/// would leave a threshold of zero for every bond).
 TIS_HD bool bondFails(double sigma_h, double sigma_v, double sigma_c, double vertical_offset,
-                      const BondConstants& c, double strength_h = 1.0, double strength_v = 1.0) {
-  // sigma_comp of Eq. (13): the present compression, or (as printed) the compressive strength.
-  const double compression = c.failure_compression == kCompressionStrength ? c.compressive_strength : sigma_c;
+                      const BondConstants& c) {
   // | rather than ||: all four are cheap and have no side effect, and without short-circuit jumps
   // the CPU's bond pass vectorises (src/core/cpu_bond_pass.cpp).
-  return (fabs(vertical_offset) >= c.thickness) | (sigma_h > strength_h * c.flexural_strength) |
-         (sigma_v > strength_v * (c.flexural_strength - c.compression_coupling * compression)) |
-         (sigma_c > strength_h * c.compressive_strength);
+  return (fabs(vertical_offset) >= c.thickness) | (sigma_h > c.flexural_strength) |
+         (sigma_v > c.flexural_strength - c.compression_coupling * sigma_c) |
+         (sigma_c > c.compressive_strength);
 }
 
 /// Force of bond b between cells i and j; turn_i = (cos yaw_i, sin yaw_i), likewise turn_j
@@ -192,15 +171,12 @@ TIS_HD BondForce rmibBondForce(const BondRest& b, const BodyState& i, Vec2 turn_
   const bool same_exponent = c.exponent_v == c.exponent_h;
   const double k_h = smoothing(offset, c.exponent_h);
   const double k_v = same_exponent ? k_h : smoothing(offset, c.exponent_v);
-  // K scales either the springs (kSmoothForce) or the strength (kSmoothStrength, in bondFails).
-  const bool smooth_force = c.bond_smoothing != kSmoothStrength;
-  const double spring_h = smooth_force ? k_h : 1.0;
-  const double spring_v = smooth_force ? k_v : 1.0;
-  const double root_k_h = spring_h == 1.0 ? 1.0 : sqrt(spring_h);  // the damping scales with sqrt(K)
-  const double root_k_v = same_exponent ? root_k_h : (spring_v == 1.0 ? 1.0 : sqrt(spring_v));
-  const double elastic_h = spring_h * b.k_normal * u_n;                       // Eqs. (11)-(12)
+  // K scales the bond's springs, as Eqs. (1) and (3) write it into the forces (docs/model.md).
+  const double root_k_h = k_h == 1.0 ? 1.0 : sqrt(k_h);  // the damping scales with sqrt(K)
+  const double root_k_v = same_exponent ? root_k_h : (k_v == 1.0 ? 1.0 : sqrt(k_v));
+  const double elastic_h = k_h * b.k_normal * u_n;                            // Eqs. (11)-(12)
   const Vec2 elastic_s = b.k_shear * u_s;
-  const double elastic_v = spring_v * b.k_vertical * dz;
+  const double elastic_v = k_v * b.k_vertical * dz;
 
   // Damping on the anchor velocities.
   const Vec2 w = (j.velocity + j.wz * perpendicular(f.arm_j)) - (i.velocity + i.wz * perpendicular(f.arm_i));
@@ -225,7 +201,7 @@ TIS_HD BondForce rmibBondForce(const BondRest& b, const BodyState& i, Vec2 turn_
         c.curvature_stress_modulus * fabs(curvatureAcrossBond(gradient_i, gradient_j, n, b.distance));
     f.sigma_v = fmax(f.sigma_v, sigma_curvature);
   }
-  f.breaks = bondFails(f.sigma_h, f.sigma_v, f.sigma_c, dz, c, smooth_force ? 1.0 : k_h, smooth_force ? 1.0 : k_v);
+  f.breaks = bondFails(f.sigma_h, f.sigma_v, f.sigma_c, dz, c);
   return f;
 }
 
