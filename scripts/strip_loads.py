@@ -40,3 +40,13 @@ def window_means(lengths, values, window, windows=None):
             sums[k] += value
             counts[k] += 1
     return [(k * window, sums[k] / counts[k] if counts[k] else float("nan")) for k in range(count)]
+
+
+def within_seed_spread(strip_means, full_means):
+    """Issue #31's check of a strip against the full width: the full-width mean lies within the seed
+    spread of the strips' mean, the spread being the larger of the strips' range and the full-width
+    seeds' own range. Returns (strips' mean, full-width mean, spread, verdict)."""
+    centre = sum(strip_means) / len(strip_means)
+    full = sum(full_means) / len(full_means)
+    spread = max(max(strip_means) - min(strip_means), max(full_means) - min(full_means))
+    return centre, full, spread, abs(full - centre) <= spread

@@ -23,6 +23,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from png_output import save_png  # noqa: E402
+from phase2_table import phase2_table  # noqa: E402
 
 SERIES = ["W-1", "W-2", "W-3", "M-1", "M-2", "S-1", "S-2"]
 # Table 5: pushed length of each experiment [m].
@@ -573,13 +574,26 @@ def main():
              "(from the end of that failure's collapse: the pile begins there) to the start of the steady window;",
              "its error is given only where there is a steady window.",
              f"Targets (issue #6): {TARGETS}.", "",
-             "The full-width runs in the tables below are of the reading before phase 2 (E_v from the floating-plate "
-             "length, alpha = 1); the scenarios now carry the phase-2 reading (E_v four times that, alpha = 0.63), "
-             "whose runs are in \"Phase 2\" below and take these tables' place as they reach length. "
+             "The first table is of the scenarios as they stand (the phase-2 reading: E_v four times the "
+             "floating-plate value, alpha = 0.63; \"Phase 2\" below says how it was chosen). The tables after it are "
+             "of the reading before phase 2 (E_v from the floating-plate length, alpha = 1), kept until the runs at "
+             "the new reading reach their lengths. "
              f"Within the tables the reading is ice.vertical_slip_friction: {READING}. "
              f"The runs made before that key entered them (level_only, until 2026-12-02) are in docs/validation/{ARCHIVE}/ "
              "and in their own section further down." if archived else "", "",
              ]
+    # The scenarios' reading first (issue #31): every series from the validation strips and the
+    # full-width runs at that reading, as far as they have got.
+    lines += ["## Every series at the scenarios' reading (E_v x 4, alpha = 0.63)", "",
+              "The runs of the scenarios as they stand: 2 m strips (sheet, structure, panels and channel 2 m wide,",
+              "walls frictionless; config/strips/validation.matrix, a 31 m sheet so that the experiments' lengths fit,",
+              "and the two W-3 strips of a 14 m sheet) and full-width runs, in docs/validation/strips/ and",
+              "docs/validation/full/. alpha F per metre of structure width against Table 6 per metre; the raw",
+              "load beside it. Runs in progress are shown as far as they got, with the experiment's pushed length",
+              "in brackets: a window the rule finds in the first metres (before any pile) is reported, not",
+              "trusted. The tables after this one are of the reading before phase 2.", ""]
+    lines += phase2_table(a.runs)
+    lines.append("")
     lines += targets_at_a_glance(runs)
     # Why each target missed above is missed, and what was tried: written by hand beside the runs.
     lines += hand_written(os.path.join(a.runs, "misses.md"))
