@@ -164,7 +164,10 @@ def main():
                  # step counts beyond a long: refused, not overflowed into an empty "completed" run
                  (scenario + ["--until-time", "1e300", "--out", os.path.join(tmp, "huge")], "time steps of"),
                  (strip_scenario(source) + ["--output-interval", "1e300", "--until-time", "1",
-                                            "--out", os.path.join(tmp, "huge")], "time steps of")]
+                                            "--out", os.path.join(tmp, "huge")], "time steps of"),
+                 # past the end of the pusher's travel (the toe at 1.1 m): refused, not crushed into the face
+                 (scenario + ["--until-length", "1.2", "--out", os.path.join(tmp, "far")],
+                  "--until-length 1.2 m is beyond the pusher's travel: its face reaches the structure's toe after 1.1 m")]
         for args, expected in cases:
             done = run(tool, args)
             if done.returncode != 2 or expected not in done.stderr:
@@ -199,8 +202,9 @@ def main():
             sd = json.load(open(os.path.join(deeper, "summary.json")))
             if sd["false_bottom"]["depth_m"] != 0.5 or sd["overrides_from_m"] != [{"set": "bottom.depth=0.5", "from_m": sd["resumed_at_m"][-1]}]:
                 failures.append(f"the deeper bottom's summary: {sd['false_bottom']}, {sd['overrides_from_m']}")
-        if os.path.exists(os.path.join(tmp, "huge")):
-            failures.append("a refused run created its --out directory")
+        for refused in ("huge", "far"):
+            if os.path.exists(os.path.join(tmp, refused)):
+                failures.append(f"a refused run created its --out directory ({refused})")
         for d, files in before.items():
             if contents(d) != files:
                 failures.append(f"a refused resumption changed {os.path.basename(d)}/ ({sorted(contents(d))})")

@@ -115,6 +115,29 @@ TEST_P(EveryBackend, PauseResetAndPusherCommand) {
   EXPECT_EQ(sim.pusherVelocity(), 0.2);
 }
 
+TEST_P(EveryBackend, ThePusherStopsWhereItsFaceReachesTheStructuresToe) {
+  // The short strip: the plate starts at x = 0 (sheet.x_min), the toe is at x = 1.1 m, so the
+  // travel is 1.1 m, reached at 0.2 m/s after 5.5 s. Commanded on to 6 s (1.2 m), it stands within
+  // one step's travel (0.2 m/s x dt) short of the toe, and it still backs off when told to.
+  Simulation sim(shortStrip(0), GetParam());
+  ASSERT_DOUBLE_EQ(sim.pusherTravel(), 1.1);
+  sim.advance(1.0);
+  EXPECT_NEAR(sim.pushedLength(), 0.2, 1e-9);  // the travel changes nothing before its end
+  EXPECT_FALSE(sim.pusherAtTravelEnd());
+  while (sim.time() < 6.0 && sim.healthy()) sim.advance(0.05);
+  ASSERT_TRUE(sim.healthy()) << sim.lastError();
+  const double stop = sim.pushedLength();
+  EXPECT_LE(stop, 1.1 + 1e-12);
+  EXPECT_GE(stop, 1.1 - 0.2 * sim.timeStep() - 1e-12);
+  EXPECT_TRUE(sim.pusherAtTravelEnd());
+  sim.advance(0.1);
+  EXPECT_EQ(sim.pushedLength(), stop);
+  sim.setPusherVelocity(-0.1);
+  sim.advance(0.1);
+  EXPECT_NEAR(sim.pushedLength(), stop - 0.01, 1e-9);
+  EXPECT_FALSE(sim.pusherAtTravelEnd());
+}
+
 /// quick.yaml with `overrides` must be refused with one ScenarioError holding every one of `parts`.
 void expectRefused(const std::vector<std::string>& overrides, const std::vector<std::string>& parts) {
   try {

@@ -85,6 +85,13 @@ class Simulation {
   double structureCriticalTimeStep() const;  ///< [s] with the structure's spring, bounds dt/n
   double pushedLength() const;
   double pusherPosition() const;    ///< [m] x of the plate
+  /// [m] the pushed length at which the plate's face reaches the structure's toe (structure.toe_x
+  /// - sheet.x_min): the end of the pusher's travel. A pusher moving towards the structure stops
+  /// there, within one time step's travel, and pushes no further whatever it is commanded: beyond
+  /// it the plate would cut into the structure, and the ice between them would be crushed without
+  /// limit (quick.yaml under ASan + UBSan blew up 0.3 m past it, bench/soak).
+  double pusherTravel() const;
+  bool pusherAtTravelEnd() const;   ///< the plate stands at the end of its travel
   long stepCount() const;
 
   /// Loads averaged over the steps of the last step()/advance() call (an output interval), so

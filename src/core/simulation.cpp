@@ -101,8 +101,26 @@ Simulation::~Simulation() = default;
 
 void Simulation::step(long steps) {
   if (!healthy() || steps <= 0) return;
-  backend_->step(steps, pusher_velocity_);
+  // The pusher's travel ends at the structure's toe (pusherTravel): the steps that would carry it
+  // past are taken with the plate standing. Before that point nothing here changes the arithmetic.
+  const double per_step = pusher_velocity_ * timeStep();  // [m] of travel per step
+  const double room = pusherTravel() - pushedLength();      // [m] left
+  if (per_step > 0.0 && per_step * static_cast<double>(steps) > room) {
+    const long moving = room > 0.0 ? std::min(steps, static_cast<long>(std::floor(room / per_step))) : 0;
+    if (moving > 0) backend_->step(moving, pusher_velocity_);
+    if (backend_->healthError().empty() && steps > moving) backend_->step(steps - moving, 0.0);
+  } else {
+    backend_->step(steps, pusher_velocity_);
+  }
   last_error_ = backend_->healthError();
+}
+
+double Simulation::pusherTravel() const {
+  return scenario_.params.structure.toe_x - scenario_.params.sheet.x_min;
+}
+
+bool Simulation::pusherAtTravelEnd() const {
+  return pushedLength() >= pusherTravel() - std::max(0.0, pusher_velocity_ * timeStep());
 }
 
 void Simulation::advance(double span) {

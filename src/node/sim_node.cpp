@@ -453,7 +453,14 @@ void SimNode::publishStatus() {
   status.header.frame_id = settings_.world_frame;
   status.sim_time = sim_->time();
   status.pushed_length = sim_->pushedLength();
-  status.pusher_velocity = applied_velocity_;
+  // At the end of its travel (the structure's toe) the plate stands whatever it is told.
+  const bool stopped_at_toe = sim_->pusherAtTravelEnd() && applied_velocity_ > 0.0;
+  status.pusher_velocity = stopped_at_toe ? 0.0 : applied_velocity_;
+  if (stopped_at_toe && !reported_travel_end_) {
+    ROS_WARN("thin_ice_sim: the pusher has reached the end of its travel (its face at the structure's toe, L = %.3f m): "
+             "it stays there until told to back off", sim_->pusherTravel());
+  }
+  reported_travel_end_ = stopped_at_toe;
   status.real_time_factor = achieved_rtf_;
   status.cells = static_cast<uint32_t>(sim_->cellCount());
   status.intact_bonds = static_cast<uint32_t>(l.intact_bonds);

@@ -116,6 +116,7 @@ class SimNode {
 
   bool have_command_ = false;
   bool command_expired_ = false;
+  bool reported_travel_end_ = false;    ///< the pusher's travel end has been logged (once per arrival)
   double command_velocity_ = 0.0;       ///< [m/s] last accepted command
   double command_sim_time_ = 0.0;       ///< [s simulated] when it arrived
   double applied_velocity_ = 0.0;       ///< [m/s] used in the last step

@@ -254,6 +254,9 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
   const long steps_per_row = std::max(1L, std::lround(o.output_interval / dt));
   const bool by_length = o.until_length > 0.0;
   auto stepsLeft = [&]() -> long {  // whole steps until the target, rounded up
+    // A target at the end of the pusher's travel is reached when the plate stops there (within a
+    // step of it: Simulation::step).
+    if (by_length && sim.pusherAtTravelEnd()) return 0;
     const double left = by_length ? (o.until_length - sim.pushedLength()) / (velocity * dt)
                                   : (o.until_time - sim.time()) / dt;
     return static_cast<long>(std::ceil(left - 1e-6));  // 1e-6 step: rounding in t or L
@@ -612,6 +615,11 @@ std::unique_ptr<Simulation> prepare(Options& o, Continuation& cont) {
   if (o.until_length > 0.0 && !(sim->pusherVelocity() > 0.0)) {
     throw UsageError("--until-length needs pusher.velocity > 0 m/s; the scenario has " +
                      jsonNumber(sim->pusherVelocity()) + " m/s (use --until-time)");
+  }
+  if (o.until_length > sim->pusherTravel()) {
+    throw UsageError("--until-length " + jsonNumber(o.until_length) + " m is beyond the pusher's travel: its face reaches " +
+                     "the structure's toe after " + jsonNumber(sim->pusherTravel()) +
+                     " m (structure.toe_x - sheet.x_min); allowed: at most that");
   }
   // Step counts are longs made from these quotients: a value whose count a long cannot hold would
   // overflow into a run that ends at once and says "completed".
