@@ -15,15 +15,35 @@ import json
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import tempfile
+import time
 
 from quick_strip import refusal_problem, strip_scenario
 
 
 def run(tool, args):
     return subprocess.run([tool] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=600)
+
+
+def stopped_early(tool, args, out):
+    """Runs thin_ice_run with `args`, sends SIGTERM once out/loads.csv.partial exists (or after 60
+    s), and returns its exit status and the summary it wrote ({} if none)."""
+    proc = subprocess.Popen([tool] + args, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    deadline = time.monotonic() + 60
+    while proc.poll() is None and time.monotonic() < deadline and \
+            not os.path.exists(os.path.join(out, "loads.csv.partial")):
+        time.sleep(0.02)
+    if proc.poll() is None:
+        proc.send_signal(signal.SIGTERM)
+    code = proc.wait(timeout=600)
+    try:
+        with open(os.path.join(out, "summary.json")) as f:
+            return code, json.load(f)
+    except (OSError, ValueError):
+        return code, {}
 
 
 def main():
@@ -202,6 +222,14 @@ def main():
             sd = json.load(open(os.path.join(deeper, "summary.json")))
             if sd["false_bottom"]["depth_m"] != 0.5 or sd["overrides_from_m"] != [{"set": "bottom.depth=0.5", "from_m": sd["resumed_at_m"][-1]}]:
                 failures.append(f"the deeper bottom's summary: {sd['false_bottom']}, {sd['overrides_from_m']}")
+        # --until-length end: the target is the end of the pusher's travel (the toe at 1.1 m), for a
+        # fresh run and a resumption alike; each is stopped by SIGTERM once it has begun its record.
+        to_end = os.path.join(tmp, "to_end")
+        for args in (scenario + ["--until-length", "end", "--out", to_end], ["--resume", to_end, "--until-length", "end"]):
+            code, summary = stopped_early(tool, args, to_end)
+            if code != 4 or summary.get("status") != "interrupted" or summary.get("target") != {"pushed_length_m": 1.1}:
+                failures.append(f"{' '.join(args[-3:])}: exit status {code}, status {summary.get('status')}, target "
+                                f"{summary.get('target')}; expected 4, interrupted, {{'pushed_length_m': 1.1}}")
         for refused in ("huge", "far"):
             if os.path.exists(os.path.join(tmp, refused)):
                 failures.append(f"a refused run created its --out directory ({refused})")

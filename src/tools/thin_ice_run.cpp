@@ -1,14 +1,16 @@
 // thin_ice_run: runs one scenario offline and writes its load history, the paper's load
 // statistics (Section 5.1, Table 6) and optional cell snapshots.
-//   thin_ice_run --scenario FILE [--set section.key=value]... (--until-length L | --until-time T)
+//   thin_ice_run --scenario FILE [--set section.key=value]... (--until-length L|end | --until-time T)
 //                [--backend cpu|cuda|auto] [--output-interval S] [--snapshots N] --out DIR
 //   thin_ice_run --resume DIR [--accept-changed-scenario] [--set section.key=value]...
-//                (--until-length L | --until-time T) [--backend cpu|cuda|auto] [--snapshots N] [--profiles]
+//                (--until-length L|end | --until-time T) [--backend cpu|cuda|auto] [--snapshots N] [--profiles]
 // Writes DIR/loads.csv (one row per output interval, through loads.csv.partial), DIR/summary.json,
 // DIR/checkpoint.bin (the state at the end, unless the run became unhealthy) and with --snapshots
 // DIR/snapshots/cells_RRRRRR.csv (RRRRRR: loads.csv data row, 1-based; 000000: the sheet at rest)
 // listed in snapshots/index.csv; with --profiles DIR/profiles.csv (the rubble pile's side and top
 // profiles at the end).
+// --until-length end runs to the end of the pusher's travel, where its face reaches the
+// structure's toe (structure.toe_x - sheet.x_min); a length beyond the travel is refused.
 // --resume goes on from DIR/checkpoint.bin with DIR's scenario and output interval to the new
 // target (the whole run's L or T), on any backend: the rows are appended to DIR/loads.csv (the old
 // file stays whole until the new one is complete), the statistics cover the whole history, and
@@ -70,11 +72,11 @@ using Clock = std::chrono::steady_clock;
 
 const char* kUsage =
     "usage: thin_ice_run --scenario FILE [--set section.key=value]... "
-    "(--until-length L | --until-time T)\n"
+    "(--until-length L|end | --until-time T)\n"
     "                    [--backend cpu|cuda|auto] [--output-interval S] [--snapshots N] [--profiles]\n"
     "                    --out DIR\n"
     "       thin_ice_run --resume DIR [--accept-changed-scenario] [--set section.key=value]...\n"
-    "                    (--until-length L | --until-time T)\n"
+    "                    (--until-length L|end | --until-time T)\n"
     "                    [--backend cpu|cuda|auto] [--snapshots N] [--profiles]\n";
 
 struct UsageError : std::runtime_error {  // bad command line: exit status 2 with the usage
@@ -87,6 +89,7 @@ struct Options {
   bool accept_changed_scenario = false;  // --resume with a scenario file changed in text, not in the run's parameters
   std::vector<std::string> overrides;  // "section.key=value", applied in order
   double until_length = 0.0;           // [m] pushed length to reach (0: not given)
+  bool until_travel_end = false;       // --until-length end: the pusher's whole travel, known once the model is built
   double until_time = 0.0;             // [s] simulated time to reach (0: not given)
   thin_ice::BackendKind backend = thin_ice::BackendKind::kAuto;
   double output_interval = 0.0;        // [s] simulated time between rows of loads.csv (0: not given)
@@ -140,7 +143,12 @@ Options parseOptions(int argc, char** argv) {
     if (flag == "--scenario") o.scenario = value;
     if (flag == "--resume") o.resume = value;
     if (flag == "--out") o.out = value;
-    if (flag == "--until-length") o.until_length = parseNumber(flag, value, "a length > 0 [m]");
+    if (flag == "--until-length" && value == "end") {
+      o.until_travel_end = true;
+      o.until_length = std::numeric_limits<double>::infinity();  // set to the travel in resolveTravelEnd
+    } else if (flag == "--until-length") {
+      o.until_length = parseNumber(flag, value, "a length > 0 [m], or 'end' (the pusher's whole travel)");
+    }
     if (flag == "--until-time") o.until_time = parseNumber(flag, value, "a time > 0 [s]");
     if (flag == "--backend") o.backend = parseBackend(value);
     if (flag == "--output-interval") o.output_interval = parseNumber(flag, value, "a time > 0 [s]");
@@ -462,6 +470,12 @@ auto aboutTheDirectory(const std::string& dir, Read read) -> decltype(read()) {
 /// --resume: the run's scenario and output interval, its checkpoint put into a new simulation, and
 /// its loads.csv read back, checked against each other. Creates nothing on disk. What is wrong
 /// with the directory is a ResumeError; a backend that cannot start fails as for a fresh run.
+/// `--until-length end` becomes the pusher's travel (structure.toe_x - sheet.x_min), which only
+/// the built model knows: a run of any sheet length can be asked to go as far as it can.
+void resolveTravelEnd(Options& o, const Simulation& sim) {
+  if (o.until_travel_end) o.until_length = sim.pusherTravel();
+}
+
 std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
   const std::string& dir = o.resume;
   thin_ice::RunSummary summary;
@@ -512,6 +526,7 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
   std::unique_ptr<Simulation> sim;
   try {
     sim = std::make_unique<Simulation>(scenario, o.backend);  // no device: exit status 1
+    resolveTravelEnd(o, *sim);
   } catch (const thin_ice::ScenarioError&) {
     // The model refuses a time step made unstable by a switch (a stiffer E, say) or by the scenario
     // file changed under --accept-changed-scenario, and its message offers a smaller
@@ -611,6 +626,7 @@ std::unique_ptr<Simulation> prepare(Options& o, Continuation& cont) {
   } else {
     refuseDirectoryWithRun(o.out);
     sim = std::make_unique<Simulation>(thin_ice::loadScenario(o.scenario, o.overrides), o.backend);
+    resolveTravelEnd(o, *sim);
   }
   if (o.until_length > 0.0 && !(sim->pusherVelocity() > 0.0)) {
     throw UsageError("--until-length needs pusher.velocity > 0 m/s; the scenario has " +
