@@ -11,7 +11,8 @@ THIN_ICE_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 THIN_ICE_WS="$THIN_ICE_ROOT/.ws"
 
 # One apt line: ROS 1 from Debian's own packages (no /opt/ros), the core's libraries, the tools
-# for plots and the headless rviz screenshot.
+# for plots and the headless rviz screenshot, and Slurm with munge for scripts/validate --slurm
+# (the test brings up its own one-node cluster; no daemon is started by the install).
 THIN_ICE_APT_PACKAGES="catkin ros-message-generation ros-message-runtime \
   libroscpp-dev ros-std-msgs libstd-msgs-dev ros-geometry-msgs libgeometry-msgs-dev \
   ros-visualization-msgs libvisualization-msgs-dev ros-std-srvs libstd-srvs-dev \
@@ -24,7 +25,8 @@ THIN_ICE_APT_PACKAGES="catkin ros-message-generation ros-message-runtime \
   python3-visualization-msgs python3-tf2-msgs python3-tf2-ros tf2-tools python3-numpy \
   python3-yaml python3-matplotlib \
   libeigen3-dev libcgal-dev libgmp-dev libmpfr-dev libyaml-cpp-dev libboost-dev \
-  googletest libgtest-dev libbenchmark-dev libnanoflann-dev cmake g++ make"
+  googletest libgtest-dev libbenchmark-dev libnanoflann-dev cmake g++ make \
+  slurm-wlm munge"
 
 thin_ice_install() {
   local missing
