@@ -187,6 +187,12 @@ class NodeInterfaceTest(unittest.TestCase):
         self.assertAlmostEqual(answer.sim_time - before.sim_time, 0.05, delta=TIME_STEP)
         answer = self.step(steps=100, duration=0.0)
         self.assertAlmostEqual(answer.sim_time - before.sim_time, 0.05 + 100 * TIME_STEP, delta=1e-9)
+        # A duration rounds up to whole steps: the tiniest positive one is one step.
+        tiny = self.step(steps=0, duration=1e-300)
+        self.assertTrue(tiny.success, tiny.message)
+        self.assertIn("stepped 1 steps", tiny.message)
+        self.assertAlmostEqual(tiny.sim_time - answer.sim_time, TIME_STEP, delta=1e-12)
+        answer = tiny
         # Requests beyond ~max_steps_per_call are refused, not run for days or cast into a
         # negative count: a huge duration, and 2^32 - 1 steps (what -1 becomes in the uint32).
         for steps, duration in ((0, 1e300), (2**32 - 1, 0.0)):

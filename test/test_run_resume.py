@@ -164,7 +164,7 @@ def main():
                  (["--resume", split, "--until-time", "1", "--set", "ice.nonsense=1"], "unknown key 'nonsense'"),
                  # a law that may switch, but whose value the run's time step cannot hold (checked
                  # again below: the message must not offer a smaller time step)
-                 (["--resume", split, "--until-time", "1", "--set", "ice.youngs_modulus=1e13"],
+                 (["--resume", split, "--until-time", "1", "--set", "ice.youngs_modulus=2e10"],
                   "a run under way keeps its numerics.time_step"),
                  # the false bottom may move down under the ice, not up through the floating cells
                  # over it (their slab bottoms float at about z = -0.04 m), and not where there is none
@@ -194,8 +194,8 @@ def main():
                 failures.append(f"{' '.join(args[-4:])}: exit status {done.returncode}, stderr {done.stderr.strip()!r}; "
                                 f"expected 2 and {expected!r}")
         # The time-step refusal: one line, and no smaller time step or more sub-steps offered.
-        stiff = ["--resume", split, "--until-time", "1", "--set", "ice.youngs_modulus=1e13"]
-        problem = refusal_problem([tool] + stiff, "ice.youngs_modulus=1e13")
+        stiff = ["--resume", split, "--until-time", "1", "--set", "ice.youngs_modulus=2e10"]
+        problem = refusal_problem([tool] + stiff, "ice.youngs_modulus=2e10")
         stderr = run(tool, stiff).stderr
         if problem or "allowed: <=" in stderr or "structure_substeps >=" in stderr:
             failures.append(f"the unstable switch's refusal: {problem or stderr.strip()!r}")
@@ -267,9 +267,9 @@ def main():
         # and offers no smaller time step; a file changed harmlessly leaves the blame with the
         # unstable --set.
         for stiffen, extras, blamed in (
-                (True, ([], ["--set", "ice.friction_ice_ice=0.4"], ["--set", "ice.vertical_modulus=1e13"]),
+                (True, ([], ["--set", "ice.friction_ice_ice=0.4"], ["--set", "ice.vertical_modulus=2e10"]),
                  "thin_ice_run: the run's scenario as it reads now ("),
-                (False, (["--set", "ice.youngs_modulus=1e13"],), "thin_ice_run: --set 'ice.youngs_modulus=1e13' with")):
+                (False, (["--set", "ice.youngs_modulus=2e10"],), "thin_ice_run: --set 'ice.youngs_modulus=2e10' with")):
             name = "stiffened" if stiffen else "retouched"
             scenario_file = os.path.join(tmp, f"quick_{name}.yaml")
             shutil.copy(os.path.join(source, "config/scenarios/quick.yaml"), scenario_file)
@@ -282,13 +282,13 @@ def main():
             with open(scenario_file) as f:
                 text = f.read()
             with open(scenario_file, "w") as f:
-                f.write(re.sub(r"(?m)^  youngs_modulus: \S+", "  youngs_modulus: 1e13", text) if stiffen
+                f.write(re.sub(r"(?m)^  youngs_modulus: \S+", "  youngs_modulus: 2e10", text) if stiffen
                         else text + "# a comment added after the run\n")
             before = contents(changed)
             for extra in extras:
                 done = run(tool, ["--resume", changed, "--accept-changed-scenario", "--until-time", "0.1"] + extra)
                 last = (done.stderr.strip().splitlines() or [""])[-1]
-                innocent = stiffen and extra and "1e13" not in extra[-1]
+                innocent = stiffen and extra and "2e10" not in extra[-1]
                 if (done.returncode != 2 or not last.startswith(blamed) or "allowed: <=" in last or
                         (innocent and extra[-1] in last) or contents(changed) != before):
                     failures.append(f"the {name} file, {' '.join(extra) or 'no --set'}: exit status "

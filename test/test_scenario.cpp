@@ -502,9 +502,9 @@ TEST_F(ScenarioFileTest, WrongTypes) {
 
 TEST_F(ScenarioFileTest, NonPositiveThickness) {
   expectError("zero-thickness.yaml", withValue(quick_, "ice", "thickness", "0"),
-              {"ice.thickness = 0 is invalid", "allowed: > 0 m"});
+              {"ice.thickness = 0 is invalid", "allowed: [0.001, 5] m"});
   expectError("negative-thickness.yaml", withValue(quick_, "ice", "thickness", "-0.05"),
-              {"ice.thickness = -0.05 is invalid", "allowed: > 0 m"});
+              {"ice.thickness = -0.05 is invalid", "allowed: [0.001, 5] m"});
 }
 
 TEST_F(ScenarioFileTest, PoissonRatioOfOneHalf) {
@@ -514,7 +514,37 @@ TEST_F(ScenarioFileTest, PoissonRatioOfOneHalf) {
 
 TEST_F(ScenarioFileTest, NegativeDensity) {
   expectError("density.yaml", withValue(quick_, "ice", "density", "-920"),
-              {"ice.density = -920 is invalid", "allowed: > 0"});
+              {"ice.density = -920 is invalid", "allowed: [500, 1000] kg/m^3"});
+}
+
+// Values that passed a sign check and then blew up at the first step, ran on with absurd
+// geometry, or were blamed on another key (sheet.cell_size, numerics.time_step): each is refused
+// by its own key's physical range, before anything is derived from it.
+TEST_F(ScenarioFileTest, HugeOrTinyFiniteValuesAreRefusedByTheirOwnKey) {
+  expectError("thick.yaml", withValue(quick_, "ice", "thickness", "1e300"),
+              {"ice.thickness = 1e+300 is invalid", "allowed: [0.001, 5] m"});
+  expectError("stiff.yaml", withValue(quick_, "ice", "youngs_modulus", "1e300"),
+              {"ice.youngs_modulus = 1e+300 is invalid", "allowed: [1000, 2e+10] Pa"});
+  expectError("long.yaml", withValue(quick_, "sheet", "length", "1e300"),
+              {"sheet.length = 1e+300 is invalid", "allowed: (0, 10000] m"});
+  expectError("weak.yaml", withValue(quick_, "ice", "flexural_strength", "1e-300"),
+              {"ice.flexural_strength = 1e-300 is invalid", "allowed: [1000, 1e+08] Pa"});
+  expectError("fast.yaml", withValue(quick_, "pusher", "velocity", "1e6"),
+              {"pusher.velocity = 1e+06 is invalid", "allowed: [-10, 10] m/s"});
+  expectError("heavy.yaml", withValue(quick_, "water", "gravity", "1e300"),
+              {"water.gravity = 1e+300 is invalid", "allowed: [1, 30] m/s^2"});
+  expectError("wide.yaml", withValue(quick_, "structure", "width", "1e300"),
+              {"structure.width = 1e+300 is invalid", "allowed: (0, 10000] m"});
+  expectError("far.yaml", withValue(quick_, "structure", "toe_x", "1e300"),
+              {"structure.toe_x = 1e+300 is invalid", "allowed: [-10000, 10000] m"});
+  expectError("drag.yaml", withValue(quick_, "water", "linear_drag", "1e300"),
+              {"water.linear_drag = 1e+300 is invalid", "allowed: [0, 1e+06]"});
+}
+
+// A derived condition names every key it comes from: ice must float on the water.
+TEST_F(ScenarioFileTest, IceDenserThanTheWaterIsRefusedNamingBoth) {
+  expectError("sinks.yaml", withValue(quick_, "water", "density", "910"),
+              {"ice.density = 920 is invalid", "does not float", "water.density = 910"});
 }
 
 TEST_F(ScenarioFileTest, NotFinite) {
@@ -544,7 +574,7 @@ TEST_F(ScenarioFileTest, RangeChecksOnOtherSections) {
   expectError("substeps.yaml", withValue(quick_, "numerics", "structure_substeps", "0"),
               {"numerics.structure_substeps = 0 is invalid", "allowed: integer in [1, 1000]"});
   expectError("pusher.yaml", withValue(quick_, "pusher", "friction", "-0.1"),
-              {"pusher.friction = -0.1 is invalid", "allowed: >= 0"});
+              {"pusher.friction = -0.1 is invalid", "allowed: [0, 2]"});
 }
 
 TEST_F(ScenarioFileTest, DuplicateKey) {

@@ -203,7 +203,9 @@ Model buildModel(const Params& params, const IceSheet& sheet, const std::string&
     msg << source << ": numerics.time_step = " << numerics.time_step << " s is unstable; allowed: <= " << allowed
         << " s (critical_step_safety " << safety << " x the critical step " << m.critical_time_step
         << " s of the stiffest spring"
-        << (substeps == 1 ? "" : " other than the structure's, which numerics.structure_substeps subdivides") << ")";
+        << (substeps == 1 ? "" : " other than the structure's, which numerics.structure_substeps subdivides")
+        << "; it comes from ice.youngs_modulus, ice.vertical_modulus, ice.poisson_ratio, ice.thickness, ice.density, "
+           "sheet.cell_size and the pusher's, the channel's and the bottom's stiffness)";
     // With one rate, say when sub-steps of the structure alone would make this dt stable.
     if (substeps == 1 && substeps_can_help) {
       const double ice_only = safety * criticalTimeStep(m, params, false);

@@ -22,6 +22,11 @@
 // (ice.friction_ice_ice and the two damping ratios included) takes its params.hpp default; the
 // sections water, bottom, pusher and channel may be left out altogether.
 //
+// Ranges: every numeric key has a physical range (unit, bounds and the reason, in the key table
+// below); a value outside it is refused naming that key before anything is derived from it, and a
+// derived condition (ice that floats, cells no smaller than the thickness, the toe beyond the
+// front) names every key it comes from.
+//
 // Overrides "section.key=value" are applied after the file; the value is read as a YAML scalar
 // and goes through the same type checks. validateParams runs once, on the final Params; an error
 // it reports names the override(s) that set one of the keys involved.
@@ -170,13 +175,29 @@ SeedLayout toLayout(const YAML::Node& n) {
 
 // ----- The key table --------------------------------------------------------------------------
 
+/// The most OpenMP threads a scenario may ask for [-].
+constexpr int kMaxThreads = 1024;
+
 using Setter = std::function<void(Params&, const YAML::Node&)>;
+
+/// A numeric key's physical range [lo, hi] (either end open where the flag says so), its unit
+/// for the messages, and why: the loader refuses a value outside it, naming the key, before any
+/// derived quantity (a cell count, a critical time step) is worked out from it.
+struct Range {
+  double lo, hi;
+  bool lo_open, hi_open;
+  const char* unit;  ///< " m", " Pa", "" (dimensionless); for an integer key, a note after the range
+  const char* why;   ///< the reason for the bounds, in a few words
+};
 
 struct Field {
   std::string key;
   std::string expected;  ///< "a number", "an integer", ... for the messages
   bool required;
   Setter set;
+  std::function<double(const Params&)> get;  ///< the value, for the range check (numbers only)
+  Range range;                               ///< unused where `get` is empty
+  bool integer = false;                      ///< the range reads "integer in [lo, hi]"
 };
 
 struct Section {
@@ -190,102 +211,157 @@ template <class S, class T, class Convert>
 Field field(S Params::*section, T S::*member, const char* key, const char* expected,
             Convert convert, bool required) {
   return {key, expected, required,
-          [=](Params& p, const YAML::Node& n) { (p.*section).*member = convert(n); }};
+          [=](Params& p, const YAML::Node& n) { (p.*section).*member = convert(n); }, {}, {}};
 }
 template <class S>
-Field number(S Params::*section, double S::*member, const char* key, bool required = false) {
-  return field(section, member, key, "a number", viaYaml<double>, required);
+Field number(S Params::*section, double S::*member, const char* key, Range range, bool required = false) {
+  Field f = field(section, member, key, "a number", viaYaml<double>, required);
+  f.get = [=](const Params& p) { return (p.*section).*member; };
+  f.range = range;
+  return f;
 }
 template <class S>
-Field integer(S Params::*section, int S::*member, const char* key) {
-  return field(section, member, key, "an integer", toInteger<int>, false);
+Field integer(S Params::*section, int S::*member, const char* key, Range range) {
+  Field f = field(section, member, key, "an integer", toInteger<int>, false);
+  f.get = [=](const Params& p) { return static_cast<double>((p.*section).*member); };
+  f.range = range;
+  f.integer = true;
+  return f;
 }
 template <class S>
 Field flag(S Params::*section, bool S::*member, const char* key) {
   return field(section, member, key, "true or false", viaYaml<bool>, false);
 }
 
+// Ranges: wide enough for every ice a test rig or a tank sees, from model-scale ice (tens of mm,
+// kPa strengths) to thick sea ice, and narrow enough to refuse what no ice or rig is (a value of
+// 1e300 passed a sign check and blew up at the first step, or was blamed on another key).
+constexpr bool kOpen = true, kClosed = false;
+constexpr double kMaxStiffness = 1e13;  // [Pa] contact stiffnesses: steel is 2e11
+constexpr double kMaxFriction = 2.0;    // [-] Coulomb coefficients of ice on ice or steel are below 1
+constexpr double kMaxLength = 1e4;      // [m] a tank or a test rig, with room
+constexpr Range kThickness{1e-3, 5.0, kClosed, kClosed, " m", "from model-scale ice (mm) to thick sea ice (m)"};
+constexpr Range kIceDensity{500.0, 1000.0, kClosed, kClosed, " kg/m^3", "ice, porous model ice included"};
+constexpr Range kStrength{1e3, 1e8, kClosed, kClosed, " Pa", "model-scale ice (kPa) to the strongest ice (MPa)"};
+constexpr Range kModulus{1e3, 2e10, kClosed, kClosed, " Pa", "at most twice the stiffest ice's 9-10 GPa"};
+constexpr Range kExponent{0.0, 10.0, kOpen, kClosed, "", "the paper's n of Eq. (6) is 0.5-2 (Table 1)"};
+constexpr Range kCoupling{0.0, 10.0, kClosed, kClosed, "", "k of Eq. (13) is about sigma_f / sigma_comp"};
+constexpr Range kFriction{0.0, kMaxFriction, kClosed, kClosed, "", "a Coulomb friction coefficient"};
+constexpr Range kDamping{0.0, 1.0, kClosed, kClosed, "", "a damping ratio is a fraction of critical damping"};
+constexpr Range kContactStiffness{0.0, kMaxStiffness, kOpen, kClosed, " Pa", "a contact stiffness (steel: 2e11 Pa)"};
+constexpr Range kSize{0.0, kMaxLength, kOpen, kClosed, " m", "a tank's or a test rig's size"};
+constexpr Range kPosition{-kMaxLength, kMaxLength, kClosed, kClosed, " m", "a position in a tank or a test rig"};
+constexpr Range kDistance{0.0, kMaxLength, kClosed, kClosed, " m", "a distance in a tank or a test rig"};
+constexpr Range kDrag{0.0, 1e6, kClosed, kClosed, "", "a drag coefficient"};
+
 const std::vector<Section>& sections() {
   using P = Params;
   static const std::vector<Section> table = {
       {"ice",
-       {number(&P::ice, &IceParams::thickness, "thickness", kRequired),
-        number(&P::ice, &IceParams::density, "density", kRequired),
-        number(&P::ice, &IceParams::flexural_strength, "flexural_strength", kRequired),
-        number(&P::ice, &IceParams::compressive_strength, "compressive_strength", kRequired),
-        number(&P::ice, &IceParams::youngs_modulus, "youngs_modulus", kRequired),
-        number(&P::ice, &IceParams::vertical_modulus, "vertical_modulus", kRequired),
-        number(&P::ice, &IceParams::poisson_ratio, "poisson_ratio", kRequired),
-        number(&P::ice, &IceParams::smoothing_exponent_h, "smoothing_exponent_h", kRequired),
-        number(&P::ice, &IceParams::smoothing_exponent_v, "smoothing_exponent_v", kRequired),
-        number(&P::ice, &IceParams::compression_coupling, "compression_coupling", kRequired),
+       {number(&P::ice, &IceParams::thickness, "thickness", kThickness, kRequired),
+        number(&P::ice, &IceParams::density, "density", kIceDensity, kRequired),
+        number(&P::ice, &IceParams::flexural_strength, "flexural_strength", kStrength, kRequired),
+        number(&P::ice, &IceParams::compressive_strength, "compressive_strength", kStrength, kRequired),
+        number(&P::ice, &IceParams::youngs_modulus, "youngs_modulus", kModulus, kRequired),
+        number(&P::ice, &IceParams::vertical_modulus, "vertical_modulus", kModulus, kRequired),
+        number(&P::ice, &IceParams::poisson_ratio, "poisson_ratio",
+               {0.0, 0.5, kClosed, kOpen, "", "3E/(1-nu) and G = E/(2(1+nu)) need nu in [0, 0.5)"}, kRequired),
+        number(&P::ice, &IceParams::smoothing_exponent_h, "smoothing_exponent_h", kExponent, kRequired),
+        number(&P::ice, &IceParams::smoothing_exponent_v, "smoothing_exponent_v", kExponent, kRequired),
+        number(&P::ice, &IceParams::compression_coupling, "compression_coupling", kCoupling, kRequired),
         field(&P::ice, &IceParams::vertical_stress, "vertical_stress", "shear, bending or plate",
               toVerticalStress, kRequired),
         flag(&P::ice, &IceParams::curvature_failure, "curvature_failure"),
         field(&P::ice, &IceParams::curvature_failure_scope, "curvature_failure_scope", "all or sheet",
               eitherOf("all", CurvatureFailureScope::kAll, "sheet", CurvatureFailureScope::kSheet), false),
         flag(&P::ice, &IceParams::plate_bending, "plate_bending"),
-        number(&P::ice, &IceParams::friction_ice_ice, "friction_ice_ice"),
+        number(&P::ice, &IceParams::friction_ice_ice, "friction_ice_ice", kFriction),
         field(&P::ice, &IceParams::vertical_slip_friction, "vertical_slip_friction", "level_only or edge_face",
               eitherOf("level_only", VerticalSlipFrictionModel::kLevelOnly, "edge_face",
                        VerticalSlipFrictionModel::kEdgeFace),
               false),
-        number(&P::ice, &IceParams::contact_damping_ratio, "contact_damping_ratio"),
-        number(&P::ice, &IceParams::bond_damping_ratio, "bond_damping_ratio")}},
+        number(&P::ice, &IceParams::contact_damping_ratio, "contact_damping_ratio", kDamping),
+        number(&P::ice, &IceParams::bond_damping_ratio, "bond_damping_ratio", kDamping)}},
       {"sheet",
-       {number(&P::sheet, &IceSheetSpec::length, "length", kRequired),
-        number(&P::sheet, &IceSheetSpec::width, "width", kRequired),
-        number(&P::sheet, &IceSheetSpec::x_min, "x_min"),
-        number(&P::sheet, &IceSheetSpec::cell_size, "cell_size", kRequired),
+       {number(&P::sheet, &IceSheetSpec::length, "length", kSize, kRequired),
+        number(&P::sheet, &IceSheetSpec::width, "width", kSize, kRequired),
+        number(&P::sheet, &IceSheetSpec::x_min, "x_min", kPosition),
+        number(&P::sheet, &IceSheetSpec::cell_size, "cell_size",
+               {0.0, 100.0, kOpen, kClosed, " m", "a cell of a sheet (the paper: A/h^2 > 10)"}, kRequired),
         field(&P::sheet, &IceSheetSpec::layout, "layout", "jittered_grid or poisson_disk", toLayout,
               false),
-        number(&P::sheet, &IceSheetSpec::jitter, "jitter"),
-        integer(&P::sheet, &IceSheetSpec::lloyd_iterations, "lloyd_iterations"),
+        number(&P::sheet, &IceSheetSpec::jitter, "jitter",
+               {0.0, 0.5, kClosed, kClosed, "", "a fraction of the cell size that keeps the seeds apart"}),
+        integer(&P::sheet, &IceSheetSpec::lloyd_iterations, "lloyd_iterations",
+                {0.0, 50.0, kClosed, kClosed, "", "Lloyd relaxation steps"}),
         field(&P::sheet, &IceSheetSpec::seed, "seed", "a non-negative integer",
               toInteger<std::uint64_t>, false)}},
       {"water",
-       {number(&P::water, &WaterParams::density, "density"),
-        number(&P::water, &WaterParams::gravity, "gravity"),
-        number(&P::water, &WaterParams::linear_drag, "linear_drag"),
-        number(&P::water, &WaterParams::quadratic_drag, "quadratic_drag"),
-        number(&P::water, &WaterParams::vertical_linear_drag, "vertical_linear_drag"),
-        number(&P::water, &WaterParams::vertical_quadratic_drag, "vertical_quadratic_drag")}},
+       {number(&P::water, &WaterParams::density, "density",
+               {900.0, 1100.0, kClosed, kClosed, " kg/m^3", "fresh to sea water, with room"}),
+        number(&P::water, &WaterParams::gravity, "gravity",
+               {1.0, 30.0, kClosed, kClosed, " m/s^2", "a test rig on Earth has 9.81"}),
+        number(&P::water, &WaterParams::linear_drag, "linear_drag", kDrag),
+        number(&P::water, &WaterParams::quadratic_drag, "quadratic_drag", kDrag),
+        number(&P::water, &WaterParams::vertical_linear_drag, "vertical_linear_drag", kDrag),
+        number(&P::water, &WaterParams::vertical_quadratic_drag, "vertical_quadratic_drag", kDrag)}},
       {"bottom",
        {flag(&P::bottom, &BottomParams::enabled, "enabled"),
-        number(&P::bottom, &BottomParams::distance_from_structure, "distance_from_structure"),
-        number(&P::bottom, &BottomParams::depth, "depth"),
-        number(&P::bottom, &BottomParams::friction, "friction"),
-        number(&P::bottom, &BottomParams::stiffness, "stiffness")}},
+        number(&P::bottom, &BottomParams::distance_from_structure, "distance_from_structure", kDistance),
+        number(&P::bottom, &BottomParams::depth, "depth",
+               {0.0, 100.0, kOpen, kClosed, " m", "the water depth over a false bottom"}),
+        number(&P::bottom, &BottomParams::friction, "friction", kFriction),
+        number(&P::bottom, &BottomParams::stiffness, "stiffness", kContactStiffness)}},
       {"structure",
-       {number(&P::structure, &StructureParams::toe_x, "toe_x", kRequired),
-        number(&P::structure, &StructureParams::angle_deg, "angle_deg"),
-        number(&P::structure, &StructureParams::width, "width"),
-        number(&P::structure, &StructureParams::height, "height"),
-        integer(&P::structure, &StructureParams::panels, "panels"),
-        number(&P::structure, &StructureParams::side_panel_length, "side_panel_length"),
-        number(&P::structure, &StructureParams::stiffness, "stiffness"),
-        number(&P::structure, &StructureParams::calibration_factor, "calibration_factor"),
-        number(&P::structure, &StructureParams::friction, "friction")}},
+       {number(&P::structure, &StructureParams::toe_x, "toe_x", kPosition, kRequired),
+        number(&P::structure, &StructureParams::angle_deg, "angle_deg",
+               {0.0, 90.0, kOpen, kOpen, " deg", "the face must be inclined, neither flat nor vertical"}),
+        number(&P::structure, &StructureParams::width, "width", kSize),
+        number(&P::structure, &StructureParams::height, "height", kSize),
+        integer(&P::structure, &StructureParams::panels, "panels",
+                {1.0, 1000.0, kClosed, kClosed, "", "the structure needs at least one panel"}),
+        number(&P::structure, &StructureParams::side_panel_length, "side_panel_length", kDistance),
+        number(&P::structure, &StructureParams::stiffness, "stiffness", kContactStiffness),
+        number(&P::structure, &StructureParams::calibration_factor, "calibration_factor",
+               {0.0, 10.0, kOpen, kClosed, "", "alpha of Eq. (18) is 0.63 in the paper"}),
+        number(&P::structure, &StructureParams::friction, "friction", kFriction)}},
       {"pusher",
-       {number(&P::pusher, &PusherParams::velocity, "velocity"),
-        number(&P::pusher, &PusherParams::stiffness, "stiffness"),
-        number(&P::pusher, &PusherParams::friction, "friction")}},
+       {number(&P::pusher, &PusherParams::velocity, "velocity",
+               {-10.0, 10.0, kClosed, kClosed, " m/s", "test rigs push at mm/s to a few m/s (the paper: 0.05)"}),
+        number(&P::pusher, &PusherParams::stiffness, "stiffness", kContactStiffness),
+        number(&P::pusher, &PusherParams::friction, "friction", kFriction)}},
       {"channel",
        {flag(&P::channel, &ChannelParams::enabled, "enabled"),
-        number(&P::channel, &ChannelParams::width, "width"),
-        number(&P::channel, &ChannelParams::stiffness, "stiffness"),
-        number(&P::channel, &ChannelParams::friction, "friction")}},
+        number(&P::channel, &ChannelParams::width, "width", kSize),
+        number(&P::channel, &ChannelParams::stiffness, "stiffness", kContactStiffness),
+        number(&P::channel, &ChannelParams::friction, "friction", kFriction)}},
       {"numerics",
-       {number(&P::numerics, &NumericsParams::time_step, "time_step", kRequired),
-        number(&P::numerics, &NumericsParams::critical_step_safety, "critical_step_safety"),
-        integer(&P::numerics, &NumericsParams::max_steps_between_rebuilds,
-                "max_steps_between_rebuilds"),
-        integer(&P::numerics, &NumericsParams::structure_substeps, "structure_substeps"),
-        number(&P::numerics, &NumericsParams::rebuild_displacement, "rebuild_displacement"),
-        number(&P::numerics, &NumericsParams::rebuild_rotation_deg, "rebuild_rotation_deg"),
-        number(&P::numerics, &NumericsParams::friction_regularisation, "friction_regularisation"),
-        number(&P::numerics, &NumericsParams::friction_viscous_limit, "friction_viscous_limit"),
-        integer(&P::numerics, &NumericsParams::threads, "threads")}},
+       {number(&P::numerics, &NumericsParams::time_step, "time_step",
+               {0.0, 1.0, kOpen, kClosed, " s", "an explicit step (the critical step refuses more, naming it)"},
+               kRequired),
+        // Above 1 an unstable step gets through: allowed (up to 1000) only so that fault handling
+        // can be tested with a deliberate blow-up (test/node_fault.test).
+        number(&P::numerics, &NumericsParams::critical_step_safety, "critical_step_safety",
+               {0.0, 1000.0, kOpen, kClosed, "", "a fraction of the critical step (above 1 only to provoke a blow-up in tests)"}),
+        integer(&P::numerics, &NumericsParams::max_steps_between_rebuilds, "max_steps_between_rebuilds",
+                {1.0, 1e9, kClosed, kClosed, "", "N_iter counts steps"}),
+        integer(&P::numerics, &NumericsParams::structure_substeps, "structure_substeps",
+                {1.0, static_cast<double>(kMaxStructureSubsteps), kClosed, kClosed, "",
+                 "sub-steps of the structure contact per step (1: none)"}),
+        number(&P::numerics, &NumericsParams::rebuild_displacement, "rebuild_displacement",
+               {0.0, 10.0, kOpen, kClosed, "", "a fraction of l-bar"}),
+        number(&P::numerics, &NumericsParams::rebuild_rotation_deg, "rebuild_rotation_deg",
+               {0.0, 45.0, kOpen, kClosed, " deg", "delta_rot must be a small positive angle"}),
+        number(&P::numerics, &NumericsParams::friction_regularisation, "friction_regularisation",
+               {0.0, 10.0, kOpen, kClosed, " m/s", "a slip speed"}),
+        number(&P::numerics, &NumericsParams::friction_viscous_limit, "friction_viscous_limit",
+               {0.0, 2.0, kOpen, kOpen, "", "an explicit step of viscous friction is stable below 2 m_eff/dt"}),
+        // At load time, whatever the machine: above kMaxThreads is no machine's core count (the
+        // runner caps a valid count at the cores present, and says so).
+        integer(&P::numerics, &NumericsParams::threads, "threads",
+                {0.0, static_cast<double>(kMaxThreads), kClosed, kClosed,
+                 " (0 = all cores; more than the cores present are capped at them)",
+                 "a thread count"})}},
   };
   return table;
 }
@@ -479,18 +555,6 @@ void require(bool ok, const std::string& key, double value, const std::string& r
                              (std::isfinite(value) ? reason : "not a finite number") +
                              "; allowed: " + allowed);
 }
-void positive(const std::string& key, double v, const std::string& what, const std::string& unit) {
-  require(v > 0.0, key, v, what + " must be positive", "> 0" + unit);
-}
-void nonNegative(const std::string& key, double v, const std::string& what,
-                 const std::string& unit) {
-  require(v >= 0.0, key, v, what + " cannot be negative", ">= 0" + unit);
-}
-void dampingRatio(const std::string& key, double zeta) {
-  require(zeta >= 0.0 && zeta <= 1.0, key, zeta,
-          "a damping ratio is a fraction of critical damping", "[0, 1]");
-}
-void finite(const std::string& key, double v) { require(true, key, v, "", "a finite number"); }
 
 void checkSheet(const Params& p) {
   try {
@@ -524,86 +588,38 @@ void checkSheet(const Params& p) {
   }
 }
 
-/// The most OpenMP threads a scenario may ask for [-].
-constexpr int kMaxThreads = 1024;
+/// "[0.001, 5] m", "(0, 90) deg", "integer in [1, 1000]": a key's range as the messages print it.
+std::string rangeText(const Field& f) {
+  const Range& r = f.range;
+  if (f.integer) return "integer in [" + fmt(r.lo) + ", " + fmt(r.hi) + "]" + r.unit;
+  return std::string(r.lo_open ? "(" : "[") + fmt(r.lo) + ", " + fmt(r.hi) + (r.hi_open ? ")" : "]") + r.unit;
+}
+
+/// Every numeric key of the table within its physical range, in the table's order.
+void checkRanges(const Params& p) {
+  for (const Section& section : sections()) {
+    for (const Field& f : section.fields) {
+      if (!f.get) continue;
+      const double v = f.get(p);
+      const Range& r = f.range;
+      const bool above_lo = r.lo_open ? v > r.lo : v >= r.lo;
+      const bool below_hi = r.hi_open ? v < r.hi : v <= r.hi;
+      require(above_lo && below_hi, section.name + "." + f.key, v, r.why, rangeText(f));
+    }
+  }
+}
 
 void checkParams(const Params& p) {
+  checkRanges(p);
   const IceParams& ice = p.ice;
-  positive("ice.thickness", ice.thickness, "the ice thickness h", " m");
-  positive("ice.density", ice.density, "the ice density", " kg/m^3");
-  positive("ice.flexural_strength", ice.flexural_strength, "the flexural strength", " Pa");
-  positive("ice.compressive_strength", ice.compressive_strength, "the compressive strength", " Pa");
-  positive("ice.youngs_modulus", ice.youngs_modulus, "Young's modulus E", " Pa");
-  positive("ice.vertical_modulus", ice.vertical_modulus, "the vertical modulus E_v", " Pa");
-  require(ice.poisson_ratio >= 0.0 && ice.poisson_ratio < 0.5, "ice.poisson_ratio",
-          ice.poisson_ratio, "Poisson's ratio must lie in [0, 0.5) (3E/(1-nu) and G need it)",
-          "[0, 0.5)");
-  positive("ice.smoothing_exponent_h", ice.smoothing_exponent_h, "the smoothing exponent n", "");
-  positive("ice.smoothing_exponent_v", ice.smoothing_exponent_v, "the smoothing exponent n", "");
-  nonNegative("ice.compression_coupling", ice.compression_coupling, "k of Eq. (13)", "");
-  nonNegative("ice.friction_ice_ice", ice.friction_ice_ice, "a friction coefficient", "");
-  dampingRatio("ice.contact_damping_ratio", ice.contact_damping_ratio);
-  dampingRatio("ice.bond_damping_ratio", ice.bond_damping_ratio);
+  require(ice.density < p.water.density, "ice.density", ice.density,
+          "ice denser than the water (water.density = " + fmt(p.water.density) + " kg/m^3) does not float",
+          "< water.density = " + fmt(p.water.density) + " kg/m^3", {"water.density"});
   if (ice.curvature_failure_scope == CurvatureFailureScope::kSheet && !ice.curvature_failure) {
     throw RangeError({"ice.curvature_failure_scope", "ice.curvature_failure"},
                      "ice.curvature_failure_scope = sheet is invalid: it limits the curvature criterion, which is "
                      "off (ice.curvature_failure = false); allowed: all, or sheet with ice.curvature_failure: true");
   }
-  positive("water.density", p.water.density, "the water density", " kg/m^3");
-  positive("water.gravity", p.water.gravity, "gravity", " m/s^2");
-  nonNegative("water.linear_drag", p.water.linear_drag, "drag", " N s/m^3");
-  nonNegative("water.quadratic_drag", p.water.quadratic_drag, "drag", "");
-  nonNegative("water.vertical_linear_drag", p.water.vertical_linear_drag, "drag", " N s/m^3");
-  nonNegative("water.vertical_quadratic_drag", p.water.vertical_quadratic_drag, "drag", "");
-  nonNegative("bottom.distance_from_structure", p.bottom.distance_from_structure,
-              "the distance in front of the structure", " m");
-  positive("bottom.depth", p.bottom.depth, "the water depth over the false bottom", " m");
-  nonNegative("bottom.friction", p.bottom.friction, "a friction coefficient", "");
-  positive("bottom.stiffness", p.bottom.stiffness, "a contact stiffness", " Pa");
-  const StructureParams& s = p.structure;
-  finite("structure.toe_x", s.toe_x);
-  require(s.angle_deg > 0.0 && s.angle_deg < 90.0, "structure.angle_deg", s.angle_deg,
-          "the face must be inclined, neither flat nor vertical", "(0, 90) deg");
-  positive("structure.width", s.width, "the structure width", " m");
-  positive("structure.height", s.height, "the structure height", " m");
-  require(s.panels >= 1 && s.panels <= 1000, "structure.panels", s.panels,
-          "the structure needs at least one panel", "integer in [1, 1000]");
-  nonNegative("structure.side_panel_length", s.side_panel_length, "a length", " m");
-  positive("structure.stiffness", s.stiffness, "K_struct", " Pa");
-  positive("structure.calibration_factor", s.calibration_factor, "alpha of Eq. (18)", "");
-  nonNegative("structure.friction", s.friction, "a friction coefficient", "");
-  finite("pusher.velocity", p.pusher.velocity);
-  positive("pusher.stiffness", p.pusher.stiffness, "a contact stiffness", " Pa");
-  nonNegative("pusher.friction", p.pusher.friction, "a friction coefficient", "");
-  positive("channel.width", p.channel.width, "the channel width", " m");
-  positive("channel.stiffness", p.channel.stiffness, "a contact stiffness", " Pa");
-  nonNegative("channel.friction", p.channel.friction, "a friction coefficient", "");
-  const NumericsParams& n = p.numerics;
-  positive("numerics.time_step", n.time_step, "the time step", " s");
-  // Above 1 an unstable step gets through: allowed (up to 1000) only so that fault handling can
-  // be tested with a deliberate blow-up (test/node_fault.test).
-  require(n.critical_step_safety > 0.0 && n.critical_step_safety <= 1000.0,
-          "numerics.critical_step_safety", n.critical_step_safety,
-          "a fraction of the critical step (above 1 only to provoke a blow-up in tests)", "(0, 1000]");
-  require(n.max_steps_between_rebuilds >= 1, "numerics.max_steps_between_rebuilds",
-          n.max_steps_between_rebuilds, "N_iter counts steps", "integer >= 1");
-  require(n.structure_substeps >= 1 && n.structure_substeps <= kMaxStructureSubsteps, "numerics.structure_substeps",
-          n.structure_substeps, "sub-steps of the structure contact per step (1: none)",
-          "integer in [1, " + std::to_string(kMaxStructureSubsteps) + "]");
-  positive("numerics.rebuild_displacement", n.rebuild_displacement, "a fraction of l-bar", "");
-  require(n.rebuild_rotation_deg > 0.0 && n.rebuild_rotation_deg <= 45.0,
-          "numerics.rebuild_rotation_deg", n.rebuild_rotation_deg,
-          "delta_rot must be a small positive angle", "(0, 45] deg");
-  positive("numerics.friction_regularisation", n.friction_regularisation, "a slip speed", " m/s");
-  require(n.friction_viscous_limit > 0.0 && n.friction_viscous_limit < 2.0, "numerics.friction_viscous_limit",
-          n.friction_viscous_limit, "an explicit step of viscous friction is stable below 2 m_eff/dt",
-          "(0, 2)");
-  // At load time, whatever the machine: above kMaxThreads is no machine's core count (the runner
-  // caps a valid count at the cores present, and says so).
-  require(n.threads >= 0 && n.threads <= kMaxThreads, "numerics.threads", n.threads,
-          "a thread count is between 0 (all cores) and " + std::to_string(kMaxThreads),
-          "integer in [0, " + std::to_string(kMaxThreads) + "] (0 = all cores; more than the cores present are "
-          "capped at them)");
   checkSheet(p);
 }
 

@@ -337,9 +337,12 @@ bool SimNode::onReset(std_srvs::Empty::Request&, std_srvs::Empty::Response&) {
 bool SimNode::onStep(thin_ice_sim::Step::Request& request, thin_ice_sim::Step::Response& response) {
   response.success = false;
   // Counted in double first: a huge duration, or a steps field of 2^32 - 1 sent for -1, is refused
-  // rather than cast into a long that overflows or a call that blocks the node for days.
-  const double wanted = request.duration > 0.0 ? std::ceil(request.duration / sim_->timeStep() - 1e-9)
-                                               : static_cast<double>(request.steps);
+  // rather than cast into a long that overflows or a call that blocks the node for days. A duration
+  // rounds up to whole steps, so any positive one is at least one step (1e-300 s answered "stepped
+  // 0 steps"); the 1e-9 keeps a duration of whole steps from gaining one by rounding.
+  const double wanted = request.duration > 0.0
+                            ? std::max(1.0, std::ceil(request.duration / sim_->timeStep() - 1e-9))
+                            : static_cast<double>(request.steps);
   if (!sim_->paused()) {
     response.message = "sim/step needs a paused simulation (call sim/pause first)";
   } else if (!std::isfinite(request.duration) || request.duration < 0.0) {
