@@ -1,12 +1,8 @@
 // CUDA backend: the step of the CPU backend (src/core/cpu_backend.cpp) with every stage on the
 // device, calling the same inline laws (include/thin_ice_sim/physics/).
 //
-// One step, five kernels (one thread per cell, bond or pair), six with the curvature criterion,
-// nine with plate bending:
+// One step, five kernels (one thread per cell, bond or pair):
 //   placeCells     world polygons, boxes, (cos, sin) yaw                     placeCell()
-//   heightGradients  the cells' height gradients (curvature criterion only)  cellHeightGradient()
-//   plateGradients, plateBondMoments, plateMoments, plateForces
-//                  plate bending only (gradients and P, q_b, nu_k, F_m)      sheet_plate.hpp
 //   bondForces     RMIB forces and failure, Eqs. 8-13                        rmibBondForce()
 //   contactForces  DEM contacts of the candidate pairs, Eqs. 1-4             demContactForce()
 //   stepCells      gather, water, planes, symplectic Euler, structure loads  stepCell()
@@ -16,9 +12,7 @@
 // rebuild is due, or a cell blew up) does nothing, so the host, which looks at the flags after
 // each batch, rebuilds before the next step exactly as the CPU backend does.
 //
-// The contact rebuild stays on the device (contact_list.cuh): only the pair count comes back;
-// with ice.curvature_failure_scope: sheet the bond states also come back at each rebuild, and the
-// host marks the intact sheet's cells (largestPieceCells, the CPU backend's function).
+// The contact rebuild stays on the device (contact_list.cuh): only the pair count comes back.
 //
 // Precision: the state is double, as on the CPU; the polygon intersection works on an integer
 // grid laid over each pair (polygon_clip.hpp), so it is exact and order-independent on both.
@@ -44,7 +38,6 @@
 #include "thin_ice_sim/incidence.hpp"
 #include "thin_ice_sim/model.hpp"
 #include "thin_ice_sim/physics/cell_forces.hpp"
-#include "thin_ice_sim/physics/sheet_plate.hpp"
 
 namespace thin_ice {
 namespace cuda {
@@ -82,73 +75,17 @@ __global__ void placeCells(int n, const RunScalars* run, const CellMotion* motio
                       world + (size_t)k * kV, box + 4 * k);
 }
 
-// Before bondForces: a bond that broke in the last step is still kBondBreaking here and, like a
-// broken one, is left out (on the CPU it is kBondBroken by now: the same bonds count).
-__global__ void heightGradients(int n, const RunScalars* run, const int* offsets, const int* entries,
-                                const unsigned char* state, const int* bond_i, const int* bond_j,
-                                const CellMotion* motion, Vec2* gradient) {
-  const int k = blockIdx.x * blockDim.x + threadIdx.x;
-  if (k >= n || run->stop) return;
-  gradient[k] = cellHeightGradient(k, offsets, entries, state, bond_i, bond_j, motion);
-}
-
-// Plate bending (sheet_plate.hpp): the gradients with their fits' P (the curvature criterion
-// then reads the same gradients), q_b of each intact bond, nu_k and F_m of each cell. Like
-// heightGradients, before bondForces: the bonds intact at the start of the step count.
-__global__ void plateGradients(int n, const RunScalars* run, const int* offsets, const int* entries,
-                               const unsigned char* state, const int* bond_i, const int* bond_j,
-                               const BondRest* rest, const Vec2* turn, const CellMotion* motion, Vec2* gradient,
-                               SymmetricMatrix2* inverse) {
-  const int k = blockIdx.x * blockDim.x + threadIdx.x;
-  if (k >= n || run->stop) return;
-  const PlateFit fit = cellPlateFit(k, offsets, entries, state, bond_i, bond_j, rest, turn, motion);
-  gradient[k] = fit.gradient;
-  inverse[k] = fit.inverse;
-}
-
-__global__ void plateBondMoments(int bonds, const RunScalars* run, double stiffness, const int* bond_i,
-                                 const int* bond_j, const BondRest* rest, const Vec2* turn, const Vec2* gradient,
-                                 const unsigned char* state, Vec2* bond_moment) {
-  const int b = blockIdx.x * blockDim.x + threadIdx.x;
-  if (b >= bonds || run->stop) return;
-  const int i = bond_i[b], j = bond_j[b];
-  bond_moment[b] = state[b] == kBondIntact
-                       ? bondPlateMoment(stiffness, rest[b], turn[i], turn[j], gradient[i], gradient[j])
-                       : Vec2{0.0, 0.0};
-}
-
-__global__ void plateMoments(int n, const RunScalars* run, const int* offsets, const int* entries,
-                             const unsigned char* state, const Vec2* bond_moment, const SymmetricMatrix2* inverse,
-                             Vec2* moment) {
-  const int k = blockIdx.x * blockDim.x + threadIdx.x;
-  if (k >= n || run->stop) return;
-  moment[k] = cellPlateMoment(k, offsets, entries, state, bond_moment, inverse[k]);
-}
-
-__global__ void plateForces(int n, const RunScalars* run, const int* offsets, const int* entries,
-                            const unsigned char* state, const int* bond_i, const int* bond_j, const BondRest* rest,
-                            const Vec2* turn, const Vec2* moment, double* plate_fz) {
-  const int k = blockIdx.x * blockDim.x + threadIdx.x;
-  if (k >= n || run->stop) return;
-  plate_fz[k] = cellPlateForce(k, offsets, entries, state, bond_i, bond_j, rest, turn, moment);
-}
-
 __global__ void bondForces(int bonds, RunScalars* run, ModelConstants c, const int* bond_i, const int* bond_j,
                            const BondRest* rest, const CellMotion* motion, const double* mass, const double* inertia,
-                           const Vec2* turn, const Vec2* gradient, const unsigned char* sheet, unsigned char* state,
-                           PairLoad* load) {
+                           const Vec2* turn, unsigned char* state, PairLoad* load) {
   const int b = blockIdx.x * blockDim.x + threadIdx.x;
   if (b >= bonds || run->stop) return;
   const unsigned char was = state[b];
   if (was == kBondBreaking) state[b] = kBondBroken;  // it applied its last force in the last step
   if (was != kBondIntact) return;
   const int i = bond_i[b], j = bond_j[b];
-  // Else gradient may be null; a bond the criterion does not check gets no curvature (kappa = 0).
-  const bool checked = c.bond.curvature_stress_modulus != 0.0 && curvatureChecked(sheet, i, j);
-  const Vec2 none = {0.0, 0.0};
   const BondForce f = rmibBondForce(rest[b], bodyOf(motion[i], mass[i], inertia[i]), turn[i],
-                                    bodyOf(motion[j], mass[j], inertia[j]), turn[j], c.bond,
-                                    checked ? gradient[i] : none, checked ? gradient[j] : none);
+                                    bodyOf(motion[j], mass[j], inertia[j]), turn[j], c.bond);
   load[b] = bondLoad(f);
   if (f.breaks) {
     state[b] = kBondBreaking;  // for good; its force of this step still acts
@@ -268,17 +205,6 @@ class CudaBackend final : public Backend {
     bond_entries_.upload(bonds.entries);
     bond_load_.resize(bonds_);
     bond_state_.resize(bonds_);
-    if (curvatureCriterion() || plateBending()) height_gradient_.resize(n_);
-    if (model.constants.curvature_sheet_only) {
-      sheet_cells_.resize(n_);
-      sheet_state_host_.resize(bonds_);
-    }
-    if (plateBending()) {
-      plate_inverse_.resize(n_);
-      plate_bond_moment_.resize(bonds_);
-      plate_moment_.resize(n_);
-      plate_fz_.resize(n_);
-    }
     motion_.resize(n_);
     reference_.resize(n_);
     world_.resize(static_cast<size_t>(n_) * kV);
@@ -416,9 +342,6 @@ class CudaBackend final : public Backend {
   }
 
  private:
-  bool curvatureCriterion() const { return model_.constants.bond.curvature_stress_modulus != 0.0; }
-  bool plateBending() const { return model_.constants.plate_bond_stiffness != 0.0; }
-
   /// The kernels of one step on stream_ (also what the graph captures).
   void launchStep() {
     const ModelConstants& c = model_.constants;
@@ -426,34 +349,10 @@ class CudaBackend final : public Backend {
     placeCells<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, motion_.get(), vertex_x_.get(), vertex_y_.get(),
                                                          vertex_count_.get(), world_.get(), box_.get(), turn_.get());
     if (bonds_ > 0) {
-      Vec2* gradient = nullptr;
-      if (plateBending()) {
-        gradient = height_gradient_.get();
-        plateGradients<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, bond_offsets_.get(), bond_entries_.get(),
-                                                                 bond_state_.get(), bond_i_.get(), bond_j_.get(),
-                                                                 bond_rest_.get(), turn_.get(), motion_.get(), gradient,
-                                                                 plate_inverse_.get());
-        plateBondMoments<<<blocksFor(bonds_), kThreads, 0, stream_>>>(
-            bonds_, run, c.plate_bond_stiffness, bond_i_.get(), bond_j_.get(), bond_rest_.get(), turn_.get(), gradient,
-            bond_state_.get(), plate_bond_moment_.get());
-        plateMoments<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, bond_offsets_.get(), bond_entries_.get(),
-                                                               bond_state_.get(), plate_bond_moment_.get(),
-                                                               plate_inverse_.get(), plate_moment_.get());
-        plateForces<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, bond_offsets_.get(), bond_entries_.get(),
-                                                              bond_state_.get(), bond_i_.get(), bond_j_.get(),
-                                                              bond_rest_.get(), turn_.get(), plate_moment_.get(),
-                                                              plate_fz_.get());
-      } else if (curvatureCriterion()) {
-        gradient = height_gradient_.get();
-        heightGradients<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, bond_offsets_.get(), bond_entries_.get(),
-                                                                  bond_state_.get(), bond_i_.get(), bond_j_.get(),
-                                                                  motion_.get(), gradient);
-      }
       bondForces<<<blocksFor(bonds_), kThreads, 0, stream_>>>(bonds_, run, c, bond_i_.get(), bond_j_.get(),
                                                                bond_rest_.get(), motion_.get(), mass_.get(),
-                                                               inertia_.get(), turn_.get(), gradient,
-                                                               c.curvature_sheet_only ? sheet_cells_.get() : nullptr,
-                                                               bond_state_.get(), bond_load_.get());
+                                                               inertia_.get(), turn_.get(), bond_state_.get(),
+                                                               bond_load_.get());
     }
     const int capacity = contacts_.capacity();
     contactForces<<<blocksFor(capacity), kThreads, 0, stream_>>>(
@@ -479,8 +378,7 @@ class CudaBackend final : public Backend {
                                contacts_.incidenceOffsets(),
                                contacts_.incidenceEntries(),
                                contacts_.touching(),
-                               contacts_.load(),
-                               plateBending() && bonds_ > 0 ? plate_fz_.get() : nullptr};
+                               contacts_.load()};
     stepCells<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, c, in, reference_.get(), motion_.get(),
                                                         structure_.get(), totals_.get(), panels_.get());
     finishStep<<<1, 1, 0, stream_>>>(run, c.time_step, c.max_steps_between_rebuilds);
@@ -501,7 +399,6 @@ class CudaBackend final : public Backend {
 
   void rebuildContacts() {
     const ModelConstants& c = model_.constants;
-    if (c.curvature_sheet_only) refreshSheetCells();
     const CandidateInputs in = {n_,          motion_.get(),       radius_.get(),      c.search_radius,
                                 c.search_margin, bond_offsets_.get(), bond_entries_.get(), bond_i_.get(),
                                 bond_j_.get(), bond_state_.get()};
@@ -515,16 +412,6 @@ class CudaBackend final : public Backend {
     startAfterRebuild<<<1, 1, 0, stream_>>>(run_.get(), contacts_.count());
     TIS_CUDA_CHECK(cudaGetLastError());
     rebuild_requested_ = false;
-  }
-
-  /// With ice.curvature_failure_scope: sheet, the cells of the intact sheet, found on the host by
-  /// the CPU backend's function (largestPieceCells) from the bond states, which the stream, idle
-  /// at a rebuild, holds as of the last step; the copy back is ordered before the next step.
-  void refreshSheetCells() {
-    TIS_CUDA_CHECK(cudaMemcpyAsync(sheet_state_host_.data(), bond_state_.get(), bonds_, cudaMemcpyDeviceToHost, stream_));
-    TIS_CUDA_CHECK(cudaStreamSynchronize(stream_));
-    sheet_cells_host_ = largestPieceCells(n_, model_.bond_i, model_.bond_j, sheet_state_host_);
-    TIS_CUDA_CHECK(cudaMemcpyAsync(sheet_cells_.get(), sheet_cells_host_.data(), n_, cudaMemcpyHostToDevice, stream_));
   }
 
   LoadSample downloadLoads(long taken) const {
@@ -573,13 +460,6 @@ class CudaBackend final : public Backend {
   DeviceArray<unsigned char> bond_state_;  ///< (bonds) BondState
   DeviceArray<PairLoad> bond_load_;  ///< (bonds)
   DeviceArray<Vec2> world_, turn_;
-  DeviceArray<Vec2> height_gradient_;  ///< (cells) with the curvature criterion or plate bending only
-  DeviceArray<unsigned char> sheet_cells_;  ///< (cells) 1: in the intact sheet; curvature scope `sheet` only
-  std::vector<unsigned char> sheet_state_host_;  ///< (bonds) the bond states copied back for it
-  std::vector<unsigned char> sheet_cells_host_;  ///< (cells) its result, kept until the copy is done
-  DeviceArray<SymmetricMatrix2> plate_inverse_;  ///< (cells) P_k [1/m^2], plate bending only
-  DeviceArray<Vec2> plate_bond_moment_, plate_moment_;  ///< (bonds) q_b [N m], (cells) nu_k [N/m]
-  DeviceArray<double> plate_fz_;  ///< (cells) plate force [N]
   DeviceArray<double> box_;
   DeviceArray<StructureContact> structure_;
   DeviceArray<double> totals_, panels_;

@@ -100,8 +100,8 @@ def main():
                 case(base + ["--set", f"{key}={value}"], key)
         # 2. Enumerations and flags.
         for key, value in (("ice.vertical_stress", "torsion"), ("sheet.layout", "hexagonal"),
-                           ("ice.vertical_slip_friction", "sideways"), ("ice.curvature_failure_scope", "half"),
-                           ("ice.plate_bending", "maybe"), ("bottom.enabled", "2"), ("channel.enabled", "yes please"),
+                           ("ice.vertical_slip_friction", "sideways"), 
+                           ("bottom.enabled", "2"), ("channel.enabled", "yes please"),
                            ("ice.vertical_stress", "'bending'"), ("sheet.seed", "-1"), ("sheet.seed", "0x10")):
             case(base + ["--set", f"{key}={value}"], key)
         # 3. Keys that do not exist, or no longer do.
@@ -110,6 +110,8 @@ def main():
                                 ("ice.vertical_contact_depth=shallower", "ice.vertical_contact_depth"),
                                 ("ice.failure_compression=strength", "ice.failure_compression"),
                                 ("ice.bond_smoothing=strength", "ice.bond_smoothing"),
+                                ("ice.plate_bending=true", "ice.plate_bending"),
+                                ("ice.curvature_failure=true", "ice.curvature_failure"),
                                 ("thickness=0.05", "thickness=0.05"), ("ice.=1", "ice.=1")):
             case(base + ["--set", setting], needle)
         # 4. Values in range that together make no scenario: the line names a key involved.

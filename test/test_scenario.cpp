@@ -314,6 +314,11 @@ TEST_F(ScenarioFileTest, TheReadingsTheRunsRejectedAreRefusedWithTheReason) {
                          Bad{"ice.bond_smoothing=strength", "ice.bond_smoothing",
                              "was removed: K of Eq. (6) scales the bond's springs"},
                          Bad{"ice.contact_face=thickness", "ice.contact_face", "was removed: Eq. (1) with the face h"},
+                         Bad{"ice.curvature_failure=false", "ice.curvature_failure",
+                             "was removed: the curvature criterion (beyond the paper)"},
+                         Bad{"ice.curvature_failure_scope=all", "ice.curvature_failure_scope", "was removed"},
+                         Bad{"ice.plate_bending=false", "ice.plate_bending",
+                             "was removed: the Kirchhoff plate term (beyond the paper)"},
                          Bad{"ice.vertical_contact_depth=shallower", "ice.vertical_contact_depth",
                              "was removed: the depth min(Z, S/L)"}}) {
     try {
@@ -346,90 +351,6 @@ TEST_F(ScenarioFileTest, VerticalSlipFrictionIsOptionalAndTakesEitherReading) {
     EXPECT_NE(m.find("ice.vertical_slip_friction"), std::string::npos) << m;
     EXPECT_NE(m.find("expected level_only or edge_face"), std::string::npos) << m;
     EXPECT_NE(m.find("sticky"), std::string::npos) << m;
-  }
-}
-
-TEST_F(ScenarioFileTest, CurvatureFailureIsOffUnlessAskedForAndReachesTheBondLaw) {
-  // The shipped scenarios name it, false; left out it is false too; true gives the bond law the
-  // plate stress per curvature E h / (2 (1 - nu^2)) (physics/sheet_curvature.hpp).
-  const std::string path = kScenarioDir + "quick.yaml";
-  const Params shipped = loadScenario(path).params;
-  EXPECT_FALSE(shipped.ice.curvature_failure);
-  const std::string without = write("without.yaml", withLine(quick_, "ice", "curvature_failure", ""));
-  EXPECT_FALSE(loadScenario(without).params.ice.curvature_failure);
-  const Params on = loadScenario(path, {"ice.curvature_failure=true"}).params;
-  EXPECT_TRUE(on.ice.curvature_failure);
-  const IceSheet sheet = generateIceSheet(on.sheet);
-  const double per_curvature = on.ice.youngs_modulus * on.ice.thickness / (2.0 * (1.0 - 0.3 * 0.3));
-  ASSERT_EQ(on.ice.poisson_ratio, 0.3);
-  EXPECT_NEAR(buildModel(on, sheet, "on").constants.bond.curvature_stress_modulus, per_curvature, 1e-9 * per_curvature);
-  EXPECT_EQ(buildModel(shipped, sheet, "off").constants.bond.curvature_stress_modulus, 0.0);
-  try {
-    loadScenario(path, {"ice.curvature_failure=sometimes"});
-    FAIL() << "a value that is not a boolean was accepted";
-  } catch (const ScenarioError& e) {
-    const std::string m = e.what();
-    EXPECT_NE(m.find("ice.curvature_failure"), std::string::npos) << m;
-    EXPECT_NE(m.find("true or false"), std::string::npos) << m;
-    EXPECT_NE(m.find("sometimes"), std::string::npos) << m;
-  }
-}
-
-TEST_F(ScenarioFileTest, CurvatureFailureScopeIsAllUnlessAskedForAndNeedsTheCriterion) {
-  // The shipped scenarios name it, all; left out it is all too; sheet with the criterion on marks
-  // the model; sheet without it, or another word, is refused with the key, the value and what is allowed.
-  const std::string path = kScenarioDir + "quick.yaml";
-  const Params shipped = loadScenario(path).params;
-  EXPECT_EQ(shipped.ice.curvature_failure_scope, CurvatureFailureScope::kAll);
-  const std::string without = write("no_scope.yaml", withLine(quick_, "ice", "curvature_failure_scope", ""));
-  EXPECT_EQ(loadScenario(without).params.ice.curvature_failure_scope, CurvatureFailureScope::kAll);
-  const Params on = loadScenario(path, {"ice.curvature_failure=true", "ice.curvature_failure_scope=sheet"}).params;
-  EXPECT_EQ(on.ice.curvature_failure_scope, CurvatureFailureScope::kSheet);
-  const IceSheet sheet = generateIceSheet(on.sheet);
-  EXPECT_TRUE(buildModel(on, sheet, "on").constants.curvature_sheet_only);
-  EXPECT_FALSE(buildModel(shipped, sheet, "off").constants.curvature_sheet_only);
-  auto refusal = [&](const std::vector<std::string>& overrides) {
-    try {
-      loadScenario(path, overrides);
-    } catch (const ScenarioError& e) {
-      return std::string(e.what());
-    }
-    return std::string("accepted");
-  };
-  const std::string alone = refusal({"ice.curvature_failure_scope=sheet"});
-  EXPECT_NE(alone.find("ice.curvature_failure_scope = sheet"), std::string::npos) << alone;
-  EXPECT_NE(alone.find("ice.curvature_failure = false"), std::string::npos) << alone;
-  EXPECT_NE(alone.find("'ice.curvature_failure_scope=sheet'"), std::string::npos) << alone;  // the override named
-  const std::string word = refusal({"ice.curvature_failure=true", "ice.curvature_failure_scope=floes"});
-  EXPECT_NE(word.find("ice.curvature_failure_scope"), std::string::npos) << word;
-  EXPECT_NE(word.find("all or sheet"), std::string::npos) << word;
-  EXPECT_NE(word.find("floes"), std::string::npos) << word;
-}
-
-TEST_F(ScenarioFileTest, PlateBendingIsOffUnlessAskedForAndReachesTheModel) {
-  // The shipped scenarios name it, false; left out it is false too; true gives the model
-  // D' = 8 E h^3 / (36 (1 - nu^2)) (physics/sheet_plate.hpp).
-  const std::string path = kScenarioDir + "quick.yaml";
-  const Params shipped = loadScenario(path).params;
-  EXPECT_FALSE(shipped.ice.plate_bending);
-  const std::string without = write("without.yaml", withLine(quick_, "ice", "plate_bending", ""));
-  EXPECT_FALSE(loadScenario(without).params.ice.plate_bending);
-  const Params on = loadScenario(path, {"ice.plate_bending=true"}).params;
-  EXPECT_TRUE(on.ice.plate_bending);
-  const IceSheet sheet = generateIceSheet(on.sheet);
-  const double h = on.ice.thickness;
-  const double stiffness = 8.0 * on.ice.youngs_modulus * h * h * h / (36.0 * (1.0 - 0.3 * 0.3));
-  ASSERT_EQ(on.ice.poisson_ratio, 0.3);
-  EXPECT_NEAR(buildModel(on, sheet, "on").constants.plate_bond_stiffness, stiffness, 1e-9 * stiffness);
-  EXPECT_EQ(buildModel(shipped, sheet, "off").constants.plate_bond_stiffness, 0.0);
-  try {
-    loadScenario(path, {"ice.plate_bending=maybe"});
-    FAIL() << "a value that is not a boolean was accepted";
-  } catch (const ScenarioError& e) {
-    const std::string m = e.what();
-    EXPECT_NE(m.find("ice.plate_bending"), std::string::npos) << m;
-    EXPECT_NE(m.find("true or false"), std::string::npos) << m;
-    EXPECT_NE(m.find("maybe"), std::string::npos) << m;
   }
 }
 
@@ -605,7 +526,7 @@ TEST_F(ScenarioFileTest, BadOverrides) {
 }
 
 TEST(OverrideKey, NamesTheKeyAsTheParserReadsIt) {
-  EXPECT_EQ(overrideKey("ice.plate_bending=true", "f.yaml"), "ice.plate_bending");
+  EXPECT_EQ(overrideKey("ice.friction_ice_ice=0.3", "f.yaml"), "ice.friction_ice_ice");
   EXPECT_EQ(overrideKey(" sheet . jitter = 0.2", "f.yaml"), "sheet.jitter");  // spaces, as applied
   EXPECT_EQ(overrideKey("numerics.threads=2", "f.yaml"), "numerics.threads");
   auto message = [](const std::string& text) {
@@ -616,11 +537,11 @@ TEST(OverrideKey, NamesTheKeyAsTheParserReadsIt) {
     }
     return std::string("no ScenarioError");
   };
-  const std::string no_value = message("ice.plate_bending");
-  EXPECT_NE(no_value.find("f.yaml: override 'ice.plate_bending': expected section.key=value"), std::string::npos)
+  const std::string no_value = message("ice.friction_ice_ice");
+  EXPECT_NE(no_value.find("f.yaml: override 'ice.friction_ice_ice': expected section.key=value"), std::string::npos)
       << no_value;
-  const std::string unknown = message("ice.plate_bendin=true");
-  EXPECT_NE(unknown.find("unknown key 'plate_bendin'"), std::string::npos) << unknown;
+  const std::string unknown = message("ice.friction_ice_ic=0.3");
+  EXPECT_NE(unknown.find("unknown key 'friction_ice_ic'"), std::string::npos) << unknown;
   const std::string section = message("icee.thickness=1");
   EXPECT_NE(section.find("f.yaml: override 'icee.thickness=1': unknown section 'icee'"), std::string::npos)
       << section;

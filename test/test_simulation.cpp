@@ -160,16 +160,6 @@ TEST(Simulation, BondedPiecesAreTheComponentsOfTheIntactBonds) {
             (std::vector<int>{5, 5, 5, 5, 5, 1}));
 }
 
-TEST(Simulation, TheIntactSheetIsTheLargestPiece) {
-  // The six cells above: pieces {0, 1}, {2, 3, 4} and {5}; the sheet is {2, 3, 4}.
-  const std::vector<int> bond_i = {0, 1, 2, 3, 4}, bond_j = {1, 2, 3, 4, 2};
-  const std::vector<unsigned char> state = {kBondIntact, kBondBroken, kBondIntact, kBondBreaking, kBondIntact};
-  EXPECT_EQ(largestPieceCells(6, bond_i, bond_j, state), (std::vector<unsigned char>{0, 0, 1, 1, 1, 0}));
-  // Only 0-1 and 2-3 intact: {0, 1} and {2, 3} tie at two cells, and both count.
-  const std::vector<unsigned char> two = {kBondIntact, kBondBroken, kBondIntact, kBondBroken, kBondBroken};
-  EXPECT_EQ(largestPieceCells(6, bond_i, bond_j, two), (std::vector<unsigned char>{1, 1, 1, 1, 0, 0}));
-}
-
 TEST_P(EveryBackend, SnapshotsGiveTheSheetAsOnePieceAndFreeBlocksAsOne) {
   // At rest the strip is one bonded piece; after its front has broken against the structure the
   // pieces still add up to every cell, in_intact_sheet is "piece of more than one", and the
@@ -227,103 +217,6 @@ TEST(Simulation, TheVerticalSlipFrictionReadingReachesTheContactLaw) {
       buildModel(loadScenario(kQuick, {"ice.vertical_slip_friction=edge_face"}).params, sheet, "quick edge_face");
   EXPECT_EQ(level.constants.contact.vertical_slip_friction, kVerticalSlipLevelOnly);
   EXPECT_EQ(edge.constants.contact.vertical_slip_friction, kVerticalSlipEdgeFace);
-}
-
-/// Broken bonds of the short strip at `until` [s] on `backend`, with the two options beyond the paper
-/// as given (the run must stay healthy).
-int brokenBondsOfTheShortStrip(BackendKind backend, bool curvature_failure, bool plate_bending, double until) {
-  Scenario strip = shortStrip(0);
-  strip.params.ice.curvature_failure = curvature_failure;
-  strip.params.ice.plate_bending = plate_bending;
-  Simulation sim(strip, backend);
-  while (sim.time() < until - 1e-9 && sim.healthy()) sim.advance(0.01);
-  EXPECT_TRUE(sim.healthy()) << sim.lastError();
-  return sim.loads().broken_bonds;
-}
-
-TEST_P(EveryBackend, TheCurvatureCriterionSparesTheFloatingSheetAndBreaksTheBentOne) {
-  // ice.curvature_failure (physics/sheet_curvature.hpp) on the short strip: while it floats
-  // towards the face (first contact ~0.27 s) no bond breaks, with or without it; once the sheet
-  // bends against the face it breaks bonds Eq. (13) alone leaves whole (by 0.45 s, 40 against 21
-  // on the CPU).
-  auto brokenAt = [&](bool curvature, double until) {
-    return brokenBondsOfTheShortStrip(GetParam(), curvature, false, until);
-  };
-  EXPECT_EQ(brokenAt(true, 0.25), 0);
-  const int with = brokenAt(true, 0.45), without = brokenAt(false, 0.45);
-  EXPECT_GT(with, without);
-}
-
-TEST_P(EveryBackend, PlateBendingSpreadsTheBendThatTheCurvatureCriterionBreaks) {
-  // ice.plate_bending (physics/sheet_plate.hpp) with the curvature criterion on the short strip:
-  // it stays stable and whole while it floats, and against the face the plate's stiffness spreads
-  // the bend over more cells, so fewer bonds reach the breaking curvature than without it (by
-  // 0.45 s, 26 against 40 on the CPU).
-  auto brokenAt = [&](bool plate, double until) { return brokenBondsOfTheShortStrip(GetParam(), true, plate, until); };
-  EXPECT_EQ(brokenAt(true, 0.25), 0);
-  const int with = brokenAt(true, 0.45), without = brokenAt(false, 0.45);
-  EXPECT_GT(with, 0);
-  EXPECT_LT(with, without);
-}
-
-/// Bonds that break in the first step of the short strip cut across at 0.4 m from its front (the
-/// bonds across the cut broken beforehand: a front piece of 0.4 m and the sheet of 0.6 m behind
-/// it) and bent as z = kappa_0 (x - x_0)^2 / 2, kappa_0 three times the breaking curvature
-/// sigma_f / (E h / (2 (1 - nu^2))) = 0.0118 1/m; counted in the front piece and in the sheet.
-struct CutStripBreaks {
-  int front = 0, sheet = 0;
-};
-CutStripBreaks breaksOfTheCutBentStrip(BackendKind kind, const std::vector<std::string>& overrides) {
-  // E_v of the floating-plate length (a quarter of quick.yaml's): with it Eq. (13) alone cannot
-  // break this bend, so what breaks is the curvature criterion's doing.
-  std::vector<std::string> all = {"sheet.length=1.0", "structure.toe_x=1.1", "bottom.distance_from_structure=0.5",
-                                  "ice.vertical_modulus=3.19e5"};
-  all.insert(all.end(), overrides.begin(), overrides.end());
-  const Scenario s = loadScenario(kQuick, all);
-  const Model model = buildModel(s.params, generateIceSheet(s.params.sheet), s.source);
-  const IceParams& ice = s.params.ice;  // quick.yaml's M-2 ice: 0.0118 1/m
-  const double breaking_curvature =
-      ice.flexural_strength / plateStressPerCurvature(ice.youngs_modulus, ice.poisson_ratio, ice.thickness);
-  double x0 = 1e9, x1 = -1e9;
-  for (const CellMotion& m : model.initial) x0 = std::min(x0, m.x), x1 = std::max(x1, m.x);
-  const double cut = x1 - 0.4;
-  BackendState start;
-  start.pusher_x = model.initial_pusher_x;
-  start.motion = model.initial;
-  for (CellMotion& m : start.motion) m.z += 3.0 * breaking_curvature * (m.x - x0) * (m.x - x0) / 2.0;
-  const int bonds = static_cast<int>(model.bond_rest.size());
-  auto front = [&](int cell) { return model.initial[cell].x > cut; };
-  for (int b = 0; b < bonds; ++b) {
-    start.bond_state.push_back(front(model.bond_i[b]) != front(model.bond_j[b]) ? kBondBroken : kBondIntact);
-  }
-  std::unique_ptr<Backend> backend =
-      kind == BackendKind::kCpu ? makeCpuBackend(model, 1) : gpuBackendProvider()->make(model);
-  backend->restoreState(start);
-  backend->step(1, 0.0);
-  EXPECT_EQ(backend->healthError(), "");
-  const std::vector<unsigned char> after = backend->saveState().bond_state;
-  CutStripBreaks count;
-  for (int b = 0; b < bonds; ++b) {
-    if (start.bond_state[b] != kBondIntact || after[b] == kBondIntact) continue;
-    (front(model.bond_i[b]) ? count.front : count.sheet) += 1;
-  }
-  return count;
-}
-
-TEST_P(EveryBackend, WithScopeSheetTheCurvatureCriterionChecksTheIntactSheetOnly) {
-  // ice.curvature_failure_scope (physics/sheet_curvature.hpp). The bend is everywhere three times
-  // past the breaking curvature, at slopes (at most 0.035) that Eq. (13) alone cannot break: so
-  // without the criterion nothing breaks; with it, bonds of both pieces break in the first step (4
-  // of the front piece and 8 of the sheet on the CPU); with the scope `sheet` only the sheet's 8 do.
-  const CutStripBreaks off = breaksOfTheCutBentStrip(GetParam(), {});
-  EXPECT_EQ(off.front + off.sheet, 0);
-  const CutStripBreaks all = breaksOfTheCutBentStrip(GetParam(), {"ice.curvature_failure=true"});
-  EXPECT_GT(all.front, 0);
-  EXPECT_GT(all.sheet, 0);
-  const CutStripBreaks sheet =
-      breaksOfTheCutBentStrip(GetParam(), {"ice.curvature_failure=true", "ice.curvature_failure_scope=sheet"});
-  EXPECT_EQ(sheet.front, 0);
-  EXPECT_EQ(sheet.sheet, all.sheet);
 }
 
 /// Every cell's state and the loads of a backend after `steps` steps: as they are compared bit for bit.

@@ -88,7 +88,7 @@ struct LoneCell {
                                &inverse_inertia, &polar_moment,   &vertex_count, vertex_x,
                                vertex_y,        world,           box,           bond_offsets,
                                bond_entries,    bond_state,      bond_load,     contact_offsets,
-                               nullptr,         nullptr,         nullptr,       nullptr};
+                               nullptr,         nullptr,         nullptr};
     StructureContact s;
     const CellStepResult r = stepCell(0, c, in, -100.0, 0.0, kRunawaySpeed, reference, motion, s);
     ASSERT_FALSE(r.blown);

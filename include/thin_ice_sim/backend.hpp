@@ -79,13 +79,6 @@ std::vector<CellSnapshot> makeCellSnapshots(const Model& model, const std::vecto
 std::vector<int> bondedPieceSizes(int cell_count, const std::vector<int>& bond_i, const std::vector<int>& bond_j,
                                   const std::vector<unsigned char>& bond_broken);
 
-/// One byte per cell: 1 for the cells of the intact sheet, the largest piece (bondedPieceSizes;
-/// every piece of that size when several tie), else 0. What the curvature criterion checks with
-/// ice.curvature_failure_scope: sheet (physics/sheet_curvature.hpp); both backends call it.
-std::vector<unsigned char> largestPieceCells(int cell_count, const std::vector<int>& bond_i,
-                                             const std::vector<int>& bond_j,
-                                             const std::vector<unsigned char>& bond_broken);
-
 /// How Simulation reaches the GPU backend without the core depending on CUDA: a build with the
 /// CUDA library registers this provider (thin_ice_sim/built_backends.hpp); without it there is none.
 struct GpuBackendProvider {

@@ -25,14 +25,6 @@ enum class VerticalSlipFrictionModel {
                ///< (the default since 2026-12-02: docs/validation/calibration.md)
 };
 
-/// Which bonds the curvature criterion (ice.curvature_failure) checks (beyond the paper:
-/// physics/sheet_curvature.hpp, docs/model.md "Curvature failure").
-enum class CurvatureFailureScope {
-  kAll,    ///< every intact bond
-  kSheet,  ///< only bonds between two cells of the intact sheet, the largest piece held together
-           ///< by intact bonds: floes that broke off keep their curvature and fail by Eq. (13) only
-};
-
 struct IceParams {
   double thickness = 0.051;             ///< h [m]
   double density = 920.0;               ///< rho_i [kg/m^3]
@@ -45,13 +37,6 @@ struct IceParams {
   double smoothing_exponent_v = 1.0;    ///< n of K_v (Eq. 6) for vertical forces [-]
   double compression_coupling = 0.0;    ///< k of Eq. (13) [-]
   VerticalStressModel vertical_stress = VerticalStressModel::kBending;
-  /// Also break a bond when the plate stress of the sheet's curvature across it, E h |kappa| /
-  /// (2 (1 - nu^2)), exceeds Eq. (13)'s threshold (beyond the paper: physics/sheet_curvature.hpp).
-  bool curvature_failure = false;
-  CurvatureFailureScope curvature_failure_scope = CurvatureFailureScope::kAll;
-  /// Give the bonded sheet a Kirchhoff plate's bending stiffness through the cells' heights
-  /// (beyond the paper: physics/sheet_plate.hpp).
-  bool plate_bending = false;
   double friction_ice_ice = 0.3;        ///< Coulomb coefficient between cells [-]
   VerticalSlipFrictionModel vertical_slip_friction = VerticalSlipFrictionModel::kEdgeFace;
   double contact_damping_ratio = 0.2;   ///< zeta of DEM contacts (fraction of critical) [-]

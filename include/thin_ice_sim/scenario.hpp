@@ -32,7 +32,7 @@ struct Scenario {
 Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides = {});
 
 /// The key an override sets, as "section.key" with the spaces the parser ignores removed
-/// (" ice . plate_bending = true" gives "ice.plate_bending"). Throws ScenarioError, prefixed with
+/// (" ice . friction_ice_ice = 0.4" gives "ice.friction_ice_ice"). Throws ScenarioError, prefixed with
 /// `source`, for text that is not section.key=value or names no key of the scenario format.
 std::string overrideKey(const std::string& text, const std::string& source);
 

@@ -1,8 +1,5 @@
 // CPU backend. One step (Algorithm 1, inner loop body):
 //   world polygons and bounding boxes of every cell          (parallel over cells)
-//   height gradients, with the curvature criterion only       (parallel over cells)   sheet_curvature.hpp
-//   with plate bending: height gradients and their fits' P,   (parallel over cells,   sheet_plate.hpp
-//   the bonds' q_b, the cells' nu_k and plate forces           bonds, cells, cells)
 //   RMIB bond forces and failure (cpu_bond_pass.cpp)          (parallel over bonds)   Eqs. 8-13
 //   DEM contact forces of the candidate pairs                 (parallel over pairs)   Eqs. 1-4
 //     (a pair kept apart by an edge found in an earlier step skips the clip: pair_separation.hpp)
@@ -12,7 +9,6 @@
 //   rebuild the candidate pairs when a cell moved > 0.1 l-bar, turned > delta_rot, a bond broke,
 //   or N_iter steps passed                                    (Algorithm 1, lines 14-17)
 //                                                             (parallel over ranges of cells and of candidates)
-//   with ice.curvature_failure_scope: sheet, also which cells are in the intact sheet   (serial, at each rebuild)
 // Pair forces are stored per pair and gathered per cell through fixed index lists, so the result
 // is bit-identical for any number of threads.
 #include "cpu_backend.hpp"
@@ -27,7 +23,6 @@
 #include "thin_ice_sim/incidence.hpp"
 #include "thin_ice_sim/neighbour_search.hpp"
 #include "thin_ice_sim/physics/pair_separation.hpp"
-#include "thin_ice_sim/physics/sheet_plate.hpp"
 
 namespace thin_ice {
 namespace {
@@ -57,13 +52,6 @@ class CpuBackend final : public Backend {
     loaded_.assign(n, 0);
     bond_load_.resize(model_.bond_rest.size());
     bond_incidence_.build(n, model_.bond_i, model_.bond_j);
-    if (model_.constants.bond.curvature_stress_modulus != 0.0 || plateBending()) height_gradient_.resize(n);
-    if (plateBending()) {
-      plate_inverse_.resize(n);
-      plate_bond_moment_.resize(model_.bond_rest.size());
-      plate_moment_.resize(n);
-      plate_fz_.resize(n);
-    }
     reset();
   }
 
@@ -172,11 +160,6 @@ class CpuBackend final : public Backend {
   /// Candidate pairs within the search radius that are not held by an intact bond.
   void rebuildContacts() {
     const int n = model_.cell_count;
-    // The cells the curvature criterion checks with scope `sheet`: a rebuild follows every step in
-    // which a bond broke, so this is at most one step old (sheet_curvature.hpp).
-    if (model_.constants.curvature_sheet_only) {
-      sheet_cells_ = largestPieceCells(n, model_.bond_i, model_.bond_j, bond_state_);
-    }
     std::vector<Vec2> centres(n);
     for (int k = 0; k < n; ++k) centres[k] = {motion_[k].x, motion_[k].y};
     const int ranges = parallel_ ? threads_ : 1;
@@ -274,67 +257,9 @@ class CpuBackend final : public Backend {
     }
   }
 
-  /// The cells' height gradients for the curvature criterion (physics/sheet_curvature.hpp).
-  void computeHeightGradients() {
-    const int n = model_.cell_count;
-#pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_)
-    for (int k = 0; k < n; ++k) {
-      height_gradient_[k] = cellHeightGradient(k, bond_incidence_.offsets.data(), bond_incidence_.entries.data(),
-                                               bond_state_.data(), model_.bond_i.data(), model_.bond_j.data(),
-                                               motion_.data());
-    }
-  }
-
-  bool plateBending() const { return model_.constants.plate_bond_stiffness != 0.0; }
-
-  /// The plate's vertical force on every cell (sheet_plate.hpp), from the bonds intact at the
-  /// start of the step; also the height gradients, which the curvature criterion then reads.
-  void computePlateForces() {
-    const int n = model_.cell_count;
-    const int bonds = static_cast<int>(model_.bond_rest.size());
-    const double stiffness = model_.constants.plate_bond_stiffness;
-    const int* offsets = bond_incidence_.offsets.data();
-    const int* entries = bond_incidence_.entries.data();
-    const unsigned char* state = bond_state_.data();
-#pragma omp parallel num_threads(threads_) if (parallel_)
-    {
-#pragma omp for schedule(static)
-      for (int k = 0; k < n; ++k) {
-        const PlateFit fit = cellPlateFit(k, offsets, entries, state, model_.bond_i.data(), model_.bond_j.data(),
-                                          model_.bond_rest.data(), turn_.data(), motion_.data());
-        height_gradient_[k] = fit.gradient;
-        plate_inverse_[k] = fit.inverse;
-      }
-#pragma omp for schedule(static)
-      for (int b = 0; b < bonds; ++b) {
-        const int i = model_.bond_i[b], j = model_.bond_j[b];
-        plate_bond_moment_[b] = state[b] == kBondIntact
-                                    ? bondPlateMoment(stiffness, model_.bond_rest[b], turn_[i], turn_[j],
-                                                      height_gradient_[i], height_gradient_[j])
-                                    : Vec2{0.0, 0.0};
-      }
-#pragma omp for schedule(static)
-      for (int k = 0; k < n; ++k) {
-        plate_moment_[k] = cellPlateMoment(k, offsets, entries, state, plate_bond_moment_.data(), plate_inverse_[k]);
-      }
-#pragma omp for schedule(static)
-      for (int k = 0; k < n; ++k) {
-        plate_fz_[k] = cellPlateForce(k, offsets, entries, state, model_.bond_i.data(), model_.bond_j.data(),
-                                      model_.bond_rest.data(), turn_.data(), plate_moment_.data());
-      }
-    }
-  }
-
   void computeBondForces() {
-    if (plateBending()) {
-      computePlateForces();
-    } else if (!height_gradient_.empty()) {
-      computeHeightGradients();
-    }
     const int newly_broken =
-        bond_pass_.run(motion_.data(), turn_.data(), height_gradient_.data(),
-                       sheet_cells_.empty() ? nullptr : sheet_cells_.data(), bond_state_.data(), bond_load_.data(),
-                       threads_, parallel_);
+        bond_pass_.run(motion_.data(), turn_.data(), bond_state_.data(), bond_load_.data(), threads_, parallel_);
     if (newly_broken > 0) {
       broken_count_ += newly_broken;
       rebuild_requested_ = true;  // the pair now needs a DEM contact
@@ -406,8 +331,7 @@ class CpuBackend final : public Backend {
                                contact_incidence_.offsets.data(),
                                contact_incidence_.entries.data(),
                                contact_touching_.data(),
-                               contact_load_.data(),
-                               plateBending() ? plate_fz_.data() : nullptr};
+                               contact_load_.data()};
 #pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_) reduction(|| : blown, moved_far)
     for (int k = 0; k < n; ++k) {
       const CellStepResult r =
@@ -461,12 +385,6 @@ class CpuBackend final : public Backend {
   std::vector<CellMotion> motion_, reference_;
   std::vector<Vec2> world_;               ///< (cells x kV) world vertices [m]
   std::vector<Vec2> turn_;                ///< (cells) (cos yaw, sin yaw)
-  std::vector<Vec2> height_gradient_;     ///< (cells) g of sheet_curvature.hpp; empty without the criterion or the plate
-  std::vector<SymmetricMatrix2> plate_inverse_;  ///< (cells) P_k of sheet_plate.hpp [1/m^2]; plate bending only
-  std::vector<Vec2> plate_bond_moment_;   ///< (bonds) q_b [N m]; plate bending only
-  std::vector<Vec2> plate_moment_;        ///< (cells) nu_k [N/m]; plate bending only
-  std::vector<double> plate_fz_;          ///< (cells) plate force [N]; plate bending only
-  std::vector<unsigned char> sheet_cells_;  ///< (cells) 1: in the intact sheet; curvature scope `sheet` only
   std::vector<int> just_broken_;          ///< bonds broken in the current step
   std::vector<double> box_;               ///< (cells x 4) x0 x1 y0 y1 [m]
   std::vector<StructureContact> structure_;

@@ -18,10 +18,9 @@ namespace {
 /// Exponent codes of the kernels: 0 as the scenario gives (scalar), 1: n = 1, 2: n = 2, 3: n = 1/2.
 constexpr double exponentOfCode(int code) { return code == 1 ? 1.0 : (code == 2 ? 2.0 : 0.5); }
 
-template <int kExponentCode, int kReading, bool kCurvature>
+template <int kExponentCode, int kReading>
 long long forceBlock(const Model& model, const BondRestColumns& r, int first, int count,
                      const CellMotion* __restrict motion, const Vec2* __restrict turn,
-                     const Vec2* __restrict gradient, const unsigned char* __restrict sheet,
                      PairLoad* __restrict load, long long* __restrict breaks) {
   // A local copy, so that the values fixed here are known where the law reads them (they fold).
   BondConstants c = model.constants.bond;
@@ -29,7 +28,6 @@ long long forceBlock(const Model& model, const BondRestColumns& r, int first, in
     c.exponent_h = c.exponent_v = exponentOfCode(kExponentCode);
     c.vertical_stress = kReading;
   }
-  if (!kCurvature) c.curvature_stress_modulus = 0.0;  // and no gradient is read
   const int* __restrict bond_i = model.bond_i.data();
   const int* __restrict bond_j = model.bond_j.data();
   const double* __restrict mass = model.mass.data();
@@ -44,12 +42,8 @@ long long forceBlock(const Model& model, const BondRestColumns& r, int first, in
                            r.k_shear[b],                       r.k_vertical[b],
                            r.damping_normal[b],                r.damping_shear[b],
                            r.damping_vertical[b]};
-    // A bond the criterion does not check gets no curvature: kappa = 0 leaves sigma_v as it is.
-    const Vec2 none = {0.0, 0.0};
-    const bool checked = kCurvature && curvatureChecked(sheet, i, j);
     const BondForce f = rmibBondForce(rest, bodyOf(motion[i], mass[i], inertia[i]), turn[i],
-                                      bodyOf(motion[j], mass[j], inertia[j]), turn[j], c,
-                                      checked ? gradient[i] : none, checked ? gradient[j] : none);
+                                      bodyOf(motion[j], mass[j], inertia[j]), turn[j], c);
     const PairLoad l = bondLoad(f);
     // Field by field: a whole-struct store keeps the compiler from vectorising.
     load[b].force_on_j.x = l.force_on_j.x;
@@ -63,31 +57,28 @@ long long forceBlock(const Model& model, const BondRestColumns& r, int first, in
   return any_breaks;
 }
 
-/// The three readings of sigma_v for one exponent code and one setting of the curvature criterion.
-template <int kExponentCode, bool kCurvature>
+/// The three readings of sigma_v for one exponent code.
+template <int kExponentCode>
 constexpr std::array<CpuBondPass::BlockKernel, 3> readings() {
-  return {&forceBlock<kExponentCode, kVerticalShear, kCurvature>,
-          &forceBlock<kExponentCode, kVerticalBending, kCurvature>,
-          &forceBlock<kExponentCode, kVerticalPlate, kCurvature>};
+  return {&forceBlock<kExponentCode, kVerticalShear>, &forceBlock<kExponentCode, kVerticalBending>,
+          &forceBlock<kExponentCode, kVerticalPlate>};
 }
 
-/// The kernel for the scenario's constants: [curvature criterion][exponent code][reading of sigma_v].
+/// The kernel for the scenario's constants: [exponent code][reading of sigma_v].
 CpuBondPass::BlockKernel kernelFor(const BondConstants& c, bool& vectorised) {
   int code = 0;
   if (c.exponent_h == c.exponent_v) {
     code = c.exponent_h == 1.0 ? 1 : (c.exponent_h == 2.0 ? 2 : (c.exponent_h == 0.5 ? 3 : 0));
   }
   const int reading = c.vertical_stress;
-  const bool curvature = c.curvature_stress_modulus != 0.0;
   if (code == 0 || reading < kVerticalShear || reading > kVerticalPlate) {
     vectorised = false;
-    return curvature ? &forceBlock<0, 0, true> : &forceBlock<0, 0, false>;
+    return &forceBlock<0, 0>;
   }
   using Table = std::array<std::array<CpuBondPass::BlockKernel, 3>, 3>;
-  static const Table kernels[2] = {{readings<1, false>(), readings<2, false>(), readings<3, false>()},
-                                   {readings<1, true>(), readings<2, true>(), readings<3, true>()}};
+  static const Table kernels = {readings<1>(), readings<2>(), readings<3>()};
   vectorised = true;
-  return kernels[curvature ? 1 : 0][code - 1][reading];
+  return kernels[code - 1][reading];
 }
 
 }  // namespace
@@ -112,8 +103,8 @@ CpuBondPass::CpuBondPass(const Model& model) : model_(model), kernel_(kernelFor(
   }
 }
 
-int CpuBondPass::run(const CellMotion* motion, const Vec2* turn, const Vec2* gradient, const unsigned char* sheet,
-                     unsigned char* state, PairLoad* load, int threads, bool parallel) const {
+int CpuBondPass::run(const CellMotion* motion, const Vec2* turn, unsigned char* state, PairLoad* load, int threads,
+                     bool parallel) const {
   const int bonds = static_cast<int>(model_.bond_rest.size());
   const int blocks = (bonds + kBondBlock - 1) / kBondBlock;
   int newly_broken = 0;
@@ -122,7 +113,7 @@ int CpuBondPass::run(const CellMotion* motion, const Vec2* turn, const Vec2* gra
     const int first = block * kBondBlock, count = std::min(kBondBlock, bonds - first);
     if (std::memchr(state + first, kBondIntact, count) == nullptr) continue;  // all broken
     long long breaks[kBondBlock];
-    if (kernel_(model_, rest_, first, count, motion, turn, gradient, sheet, load, breaks) == 0) continue;
+    if (kernel_(model_, rest_, first, count, motion, turn, load, breaks) == 0) continue;
     for (int t = 0; t < count; ++t) {
       if (breaks[t] != 0 && state[first + t] == kBondIntact) {
         state[first + t] = kBondBreaking;  // for good; its force of this step still acts

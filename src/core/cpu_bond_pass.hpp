@@ -6,8 +6,7 @@
 // keeps the loop scalar, about 190 instructions a bond (docs/performance.md). Here the records
 // are held column by column (one array per field), the bonds are taken in blocks of kBondBlock,
 // and for the three exponents of Table 1 (n = 1, 2, 1/2, the same for K_n and K_v) and each
-// reading of sigma_v (with and without the curvature criterion) the law is compiled with those
-// constants fixed, so that its branches fold
+// reading of sigma_v the law is compiled with those constants fixed, so that its branches fold
 // or become selects and the compiler computes four bonds per AVX2 instruction. Other exponents
 // take the same law on the same columns, scalar.
 //
@@ -39,11 +38,9 @@ class CpuBondPass {
 
   /// Computes the load of every intact bond into load[b] and marks the bonds that fail in this
   /// step kBondBreaking in state; returns how many did. motion and turn: (cells) the cells'
-  /// state and (cos, sin) of their yaw in this step; gradient: (cells) their height gradients,
-  /// read only when the scenario has the curvature criterion (else may be null); sheet: (cells)
-  /// which cells the criterion checks (curvatureChecked, sheet_curvature.hpp), null for all.
-  int run(const CellMotion* motion, const Vec2* turn, const Vec2* gradient, const unsigned char* sheet,
-          unsigned char* state, PairLoad* load, int threads, bool parallel) const;
+  /// state and (cos, sin) of their yaw in this step.
+  int run(const CellMotion* motion, const Vec2* turn, unsigned char* state, PairLoad* load, int threads,
+          bool parallel) const;
 
   /// Whether the scenario's constants have a vectorised instance (else the scalar one runs).
   bool vectorised() const { return vectorised_; }
@@ -51,8 +48,8 @@ class CpuBondPass {
   /// Computes bonds [first, first + count) of the block into load and breaks (1: Eq. 13 met);
   /// returns non-zero when any of them breaks.
   using BlockKernel = long long (*)(const Model& model, const BondRestColumns& rest, int first, int count,
-                                    const CellMotion* motion, const Vec2* turn, const Vec2* gradient,
-                                    const unsigned char* sheet, PairLoad* load, long long* breaks);
+                                    const CellMotion* motion, const Vec2* turn, PairLoad* load,
+                                    long long* breaks);
 
  private:
   const Model& model_;

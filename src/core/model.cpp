@@ -5,7 +5,6 @@
 #include <sstream>
 
 #include "thin_ice_sim/physics/pair_separation.hpp"
-#include "thin_ice_sim/physics/sheet_plate.hpp"
 #include "thin_ice_sim/scenario.hpp"
 
 namespace thin_ice {
@@ -50,11 +49,7 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
             ice.compressive_strength,
             ice.compression_coupling,
             verticalStressReading(ice.vertical_stress),
-            floatingPlateMomentArm(ice.youngs_modulus, ice.poisson_ratio, h, p.water.density, p.water.gravity),
-            ice.curvature_failure ? plateStressPerCurvature(ice.youngs_modulus, ice.poisson_ratio, h) : 0.0};
-  c.plate_bond_stiffness = ice.plate_bending ? plateBondStiffness(ice.youngs_modulus, ice.poisson_ratio, h) : 0.0;
-  c.curvature_sheet_only =
-      ice.curvature_failure && ice.curvature_failure_scope == CurvatureFailureScope::kSheet;
+            floatingPlateMomentArm(ice.youngs_modulus, ice.poisson_ratio, h, p.water.density, p.water.gravity)};
   c.separation_gap_fraction = kSeparationGapFraction;
   c.water = {p.water.density,       p.water.gravity,        h, p.water.linear_drag,
              p.water.quadratic_drag, p.water.vertical_linear_drag, p.water.vertical_quadratic_drag};

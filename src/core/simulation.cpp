@@ -41,16 +41,6 @@ std::vector<int> bondedPieceSizes(int cell_count, const std::vector<int>& bond_i
   return out;
 }
 
-std::vector<unsigned char> largestPieceCells(int cell_count, const std::vector<int>& bond_i,
-                                             const std::vector<int>& bond_j,
-                                             const std::vector<unsigned char>& bond_broken) {
-  const std::vector<int> piece = bondedPieceSizes(cell_count, bond_i, bond_j, bond_broken);
-  const int largest = piece.empty() ? 0 : *std::max_element(piece.begin(), piece.end());
-  std::vector<unsigned char> out(cell_count);
-  for (int k = 0; k < cell_count; ++k) out[k] = piece[k] == largest ? 1 : 0;
-  return out;
-}
-
 std::vector<CellSnapshot> makeCellSnapshots(const Model& model, const std::vector<CellMotion>& motion,
                                             const std::vector<unsigned char>& bond_broken) {
   const std::vector<int> piece = bondedPieceSizes(model.cell_count, model.bond_i, model.bond_j, bond_broken);

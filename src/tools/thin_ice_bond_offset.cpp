@@ -12,8 +12,7 @@
 //     surface, sigma_f / (E h / (2 (1 - nu^2)));
 //   - the height at which a cell's centroid floats at rest.
 // scripts/sheet_bending reads it, so that the thresholds it sets the sheet's shape against are
-// the engine's own laws (thin_ice_sim/edge_check.hpp, physics/bond.hpp, sheet_curvature.hpp,
-// water.hpp). The model is built without the time-step check: a stiffer ice asked about here need
+// the engine's own laws (thin_ice_sim/edge_check.hpp, physics/bond.hpp, water.hpp). The model is built without the time-step check: a stiffer ice asked about here need
 // not be one a run could step.
 //   thin_ice_bond_offset --scenario FILE [--set section.key=value]... [--slope S]...
 // Exit status: 0 done; 2 bad arguments or scenario.
@@ -27,7 +26,6 @@
 #include <vector>
 
 #include "thin_ice_sim/edge_check.hpp"
-#include "thin_ice_sim/physics/sheet_curvature.hpp"
 #include "thin_ice_sim/physics/water.hpp"
 #include "thin_ice_sim/scenario.hpp"
 
@@ -36,6 +34,12 @@ namespace {
 const char* kUsage =
     "usage: thin_ice_bond_offset --scenario FILE [--set section.key=value]... [--slope S]...\n"
     "  S: a slope of the sheet across the bond [-] (height step over the bond's length)\n";
+
+/// Surface stress [Pa] of an elastic (Kirchhoff) plate per unit curvature [1/m]: sigma = 6 M / h^2
+/// with M = D kappa, D = E h^3 / (12 (1 - nu^2)), so sigma / kappa = E h / (2 (1 - nu^2)).
+double plateStressPerCurvature(double youngs_modulus, double poisson_ratio, double thickness) {
+  return youngs_modulus * thickness / (2.0 * (1.0 - poisson_ratio * poisson_ratio));
+}
 
 int refuse(const std::string& message) {
   std::fprintf(stderr, "thin_ice_bond_offset: %s\n", message.c_str());
@@ -122,7 +126,7 @@ int main(int argc, char** argv) {
          << number(top.offset / d, "its slope") << ",\n \"breaking_slope\": "
          << (capacity.by_stress ? number(capacity.offset / d, "the breaking slope") : std::string("null"))
          << ",\n \"plate_breaking_curvature_per_m\": "
-         << number(sigma_f / thin_ice::plateStressPerCurvature(p.ice.youngs_modulus, p.ice.poisson_ratio,
+         << number(sigma_f / plateStressPerCurvature(p.ice.youngs_modulus, p.ice.poisson_ratio,
                                                                p.ice.thickness),
                    "the plate's breaking curvature")
          << ",\n \"slopes\": [";

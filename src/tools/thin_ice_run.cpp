@@ -16,7 +16,7 @@
 // file stays whole until the new one is complete), the statistics cover the whole history, and
 // the summary's wall time is the sum of the segments. --snapshots N then spreads N snapshots over
 // the new segment, the last at its end. --set with --resume switches a law on from the resumption
-// (e.g. ice.plate_bending=true): the override joins the run's, and the summary's overrides_from_m
+// (e.g. ice.friction_ice_ice=0.6): the override joins the run's, and the summary's overrides_from_m
 // says from which L it holds. Only the keys of kSwitchableKeys (resume_switch.hpp) are taken there,
 // and not a value under which the run's time step is unstable, nor a false bottom raised through
 // the ice over it.

@@ -10,8 +10,6 @@
 //             sigma_c > sigma_comp; sigma_h = F_h/(h L_e), sigma_c = max(0, -F_h)/(h L_e), sigma_v
 //             from F_v by the chosen reading (shear: |F_v|/(h L_e); bending: 6 M/(L_e h^2), M = |F_v| d/2;
 //             plate: 6 M/(L_e h^2), M = |F_v| e^(-pi/4) l, the floating plate's largest moment)
-//   Optional, beyond the paper (ice.curvature_failure): sigma_v is at least the plate stress of the
-//             sheet's curvature across the bond, E h |kappa_ij| / (2 (1 - nu^2)) (sheet_curvature.hpp)
 // Damping (ratio zeta of critical) acts on the anchor velocities; stresses use the elastic forces.
 #pragma once
 
@@ -20,7 +18,6 @@
 #include "thin_ice_sim/physics/contact.hpp"
 #include "thin_ice_sim/physics/host_device.hpp"
 #include "thin_ice_sim/physics/integrate.hpp"
-#include "thin_ice_sim/physics/sheet_curvature.hpp"
 #include "thin_ice_sim/physics/smoothing.hpp"
 #include "thin_ice_sim/physics/vec2.hpp"
 
@@ -78,8 +75,6 @@ struct BondConstants {
   double compression_coupling;  ///< k of Eq. (13) [-]
   int vertical_stress;          ///< a VerticalStressReading
   double plate_moment_arm;      ///< e^(-pi/4) l [m], used by kVerticalPlate
-  /// E h / (2 (1 - nu^2)) [Pa m] with ice.curvature_failure, else 0: the curvature criterion is off.
-  double curvature_stress_modulus;
 };
 
 struct BondForce {
@@ -88,7 +83,7 @@ struct BondForce {
   Vec2 arm_i;          ///< [m] anchor of i relative to i's centroid, world frame (moment arm)
   Vec2 arm_j;          ///< [m]
   double sigma_h;      ///< [Pa] horizontal (tensile > 0) stress
-  double sigma_v;      ///< [Pa] vertical stress (with curvature failure, at least the curvature's)
+  double sigma_v;      ///< [Pa] vertical stress
   double sigma_c;      ///< [Pa] current compressive stress
   bool breaks;         ///< Eq. (13) met in this step
 };
@@ -97,21 +92,6 @@ struct BondForce {
 /// which it broke (kBondBreaking); from the next step on it is gone for good (kBondBroken).
 /// Any state other than kBondIntact counts as broken for contacts and for output.
 enum BondState : unsigned char { kBondIntact = 0, kBondBreaking = 1, kBondBroken = 2 };
-
-/// Height gradient g_k [-] of cell k (sheet_curvature.hpp) from the cells joined to it by intact
-/// bonds; offsets and entries are the bonds' incidence lists (incidence.hpp), taken in their order.
-TIS_HD Vec2 cellHeightGradient(int k, const int* offsets, const int* entries, const unsigned char* state,
-                               const int* bond_i, const int* bond_j, const CellMotion* motion) {
-  HeightGradientSums sums = {0.0, 0.0, 0.0, 0.0, 0.0};
-  const CellMotion& self = motion[k];
-  for (int e = offsets[k]; e < offsets[k + 1]; ++e) {
-    const int b = entries[e] >> 1;
-    if (state[b] != kBondIntact) continue;
-    const CellMotion& other = motion[(entries[e] & 1) ? bond_i[b] : bond_j[b]];
-    addHeightSample(sums, Vec2{other.x - self.x, other.y - self.y}, other.z - self.z);
-  }
-  return heightGradient(sums);
-}
 
 /// The rest normal n of Eq. (9) turned by the pair's mean yaw: the bisector of its two turned
 /// copies (exact for |yaw_i - yaw_j| < pi, and one square root instead of a sine and a cosine).
@@ -151,11 +131,9 @@ TIS_HD bool bondFails(double sigma_h, double sigma_v, double sigma_c, double ver
 }
 
 /// Force of bond b between cells i and j; turn_i = (cos yaw_i, sin yaw_i), likewise turn_j
-/// (computed once per cell and step by the caller); gradient_i and gradient_j: the cells' height
-/// gradients (cellHeightGradient), read only with the curvature criterion.
+/// (computed once per cell and step by the caller).
 TIS_HD BondForce rmibBondForce(const BondRest& b, const BodyState& i, Vec2 turn_i, const BodyState& j,
-                               Vec2 turn_j, const BondConstants& c, Vec2 gradient_i = Vec2{0.0, 0.0},
-                               Vec2 gradient_j = Vec2{0.0, 0.0}) {
+                               Vec2 turn_j, const BondConstants& c) {
   BondForce f;
   f.arm_i = rotate(b.anchor_i, turn_i.x, turn_i.y);
   f.arm_j = rotate(b.anchor_j, turn_j.x, turn_j.y);
@@ -194,13 +172,6 @@ TIS_HD BondForce rmibBondForce(const BondRest& b, const BodyState& i, Vec2 turn_
   f.sigma_h = elastic_h / section;
   f.sigma_c = elastic_h < 0.0 ? -f.sigma_h : 0.0;  // the same quotient, negated exactly
   f.sigma_v = verticalBondStress(elastic_v, b, c);
-  // A modulus of 0 means the criterion is off: then nothing here is computed (where the modulus is
-  // a constant 0, as in the CPU pass's instances without it, the compiler drops the division).
-  if (c.curvature_stress_modulus != 0.0) {
-    const double sigma_curvature =
-        c.curvature_stress_modulus * fabs(curvatureAcrossBond(gradient_i, gradient_j, n, b.distance));
-    f.sigma_v = fmax(f.sigma_v, sigma_curvature);
-  }
   f.breaks = bondFails(f.sigma_h, f.sigma_v, f.sigma_c, dz, c);
   return f;
 }

@@ -1,6 +1,5 @@
 // Everything that happens to one cell in one step, after the pair forces are known: the bond
-// and contact forces gathered in a fixed order (with ice.plate_bending, then the plate's vertical
-// force, sheet_plate.hpp), water (Eq. 16), the rigid planes (pusher, basin walls, false bottom,
+// and contact forces gathered in a fixed order, water (Eq. 16), the rigid planes (pusher, basin walls, false bottom,
 // the structure face panel by panel, Eq. 17) and symplectic Euler (Eqs. 14-15). One definition,
 // called per cell by the CPU backend's loop and by the CUDA backend's kernel, on the same plain
 // arrays, so both do the same arithmetic in the same order.
@@ -68,8 +67,6 @@ struct ModelConstants {
   int max_steps_between_rebuilds;  ///< N_iter
   double search_radius;            ///< [m] centroid distance under which a pair may be a candidate
   double search_margin;            ///< [m] a pair is a candidate when |c_i - c_j| <= r_i + r_j + this
-  double plate_bond_stiffness;     ///< D' [N m] of ice.plate_bending (sheet_plate.hpp); 0: off
-  bool curvature_sheet_only;       ///< ice.curvature_failure_scope: sheet (sheet_curvature.hpp)
   /// [-] a remembered separating edge skips a pair's clip while it keeps the polygons this x
   /// (r_i + r_j) apart (pair_separation.hpp); infinite: never. Never 0, even in a default Model.
   double separation_gap_fraction = kSeparationGapFraction;
@@ -109,7 +106,6 @@ struct CellStepInputs {
   const int* contact_entries;
   const unsigned char* contact_touching;  ///< (pairs) S > 0 in this step
   const PairLoad* contact_load;       ///< (pairs) valid where touching
-  const double* plate_fz;             ///< (cells) [N] plate bending's force (sheet_plate.hpp); null: off
 };
 
 /// What one cell's update reports.
@@ -332,7 +328,6 @@ TIS_HD CellStepResult stepCell(int k, const ModelConstants& c, const CellStepInp
     if (!in.contact_touching[p]) continue;
     addPairLoad(in.contact_load[p], in.contact_entries[e] & 1, fx, fy, fz, tz);
   }
-  if (in.plate_fz != nullptr) fz += in.plate_fz[k];
   const double mass = in.mass[k], inertia = in.inertia[k], area = in.area[k];
   const double inverse_mass = in.inverse_mass[k], inverse_inertia = in.inverse_inertia[k];
   const WaterForce w = waterForce(c.water, mass, area, in.polar_moment[k], m.z, {m.vx, m.vy}, m.vz, m.wz);
