@@ -442,24 +442,22 @@ TEST_F(ScenarioFileTest, NegativeDensity) {
 // geometry, or were blamed on another key (sheet.cell_size, numerics.time_step): each is refused
 // by its own key's physical range, before anything is derived from it.
 TEST_F(ScenarioFileTest, HugeOrTinyFiniteValuesAreRefusedByTheirOwnKey) {
-  expectError("thick.yaml", withValue(quick_, "ice", "thickness", "1e300"),
-              {"ice.thickness = 1e+300 is invalid", "allowed: [0.001, 5] m"});
-  expectError("stiff.yaml", withValue(quick_, "ice", "youngs_modulus", "1e300"),
-              {"ice.youngs_modulus = 1e+300 is invalid", "allowed: [1000, 2e+10] Pa"});
-  expectError("long.yaml", withValue(quick_, "sheet", "length", "1e300"),
-              {"sheet.length = 1e+300 is invalid", "allowed: (0, 10000] m"});
-  expectError("weak.yaml", withValue(quick_, "ice", "flexural_strength", "1e-300"),
-              {"ice.flexural_strength = 1e-300 is invalid", "allowed: [1000, 1e+08] Pa"});
-  expectError("fast.yaml", withValue(quick_, "pusher", "velocity", "1e6"),
-              {"pusher.velocity = 1e+06 is invalid", "allowed: [-10, 10] m/s"});
-  expectError("heavy.yaml", withValue(quick_, "water", "gravity", "1e300"),
-              {"water.gravity = 1e+300 is invalid", "allowed: [1, 30] m/s^2"});
-  expectError("wide.yaml", withValue(quick_, "structure", "width", "1e300"),
-              {"structure.width = 1e+300 is invalid", "allowed: (0, 10000] m"});
-  expectError("far.yaml", withValue(quick_, "structure", "toe_x", "1e300"),
-              {"structure.toe_x = 1e+300 is invalid", "allowed: [-10000, 10000] m"});
-  expectError("drag.yaml", withValue(quick_, "water", "linear_drag", "1e300"),
-              {"water.linear_drag = 1e+300 is invalid", "allowed: [0, 1e+06]"});
+  struct Case {
+    const char *section, *key, *value, *refused, *allowed;
+  };
+  for (const Case& c : {Case{"ice", "thickness", "1e300", "1e+300", "[0.001, 5] m"},
+                        Case{"ice", "youngs_modulus", "1e300", "1e+300", "[1000, 2e+10] Pa"},
+                        Case{"sheet", "length", "1e300", "1e+300", "(0, 10000] m"},
+                        Case{"ice", "flexural_strength", "1e-300", "1e-300", "[1000, 1e+08] Pa"},
+                        Case{"pusher", "velocity", "1e6", "1e+06", "[-10, 10] m/s"},
+                        Case{"water", "gravity", "1e300", "1e+300", "[1, 30] m/s^2"},
+                        Case{"structure", "width", "1e300", "1e+300", "(0, 10000] m"},
+                        Case{"structure", "toe_x", "1e300", "1e+300", "[-10000, 10000] m"},
+                        Case{"water", "linear_drag", "1e300", "1e+300", "[0, 1e+06]"}}) {
+    const std::string key = std::string(c.section) + "." + c.key;
+    expectError(key + ".yaml", withValue(quick_, c.section, c.key, c.value),
+                {key + " = " + c.refused + " is invalid", std::string("allowed: ") + c.allowed});
+  }
 }
 
 // A derived condition names every key it comes from: ice must float on the water.
