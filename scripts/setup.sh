@@ -4,7 +4,7 @@
 # nothing and catkin_make rebuilds only what changed.
 
 # Debian's ROS 1 tools are python3 scripts with '#!/usr/bin/env python3'; a pyenv python3 first
-# on PATH lacks catkin_pkg and rospy, so /usr/bin goes first (BUILD-NOTES.md).
+# on PATH lacks catkin_pkg and rospy, so /usr/bin goes first.
 export PATH=/usr/bin:/bin:/usr/sbin:/sbin:$PATH
 
 THIN_ICE_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)

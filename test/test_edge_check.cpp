@@ -89,7 +89,7 @@ TEST(EdgeCheck, FloatingPlateOfMediumIce) {
   // M-2 ice: E = 328 MPa, h = 0.051 m, nu = 0.3, sigma_f = 108 kPa, rho_w g = 9810 N/m^3.
   // l = (328e6 * 0.051^3 / (12 * 0.91 * 9810))^(1/4) = 0.7983 m;
   // P_crit = sigma_f h^2 / (6 e^(-pi/4) l) = 108e3 * 0.051^2 / (6 * 0.455938 * 0.798313) =
-  // 128.627 N/m; SPEC-NOTES' 0.665 * 108e3 * (9810 * 0.051^5 / 328e6)^(1/4) = 128.72 rounds the
+  // 128.627 N/m; the rounded 0.665 * 108e3 * (9810 * 0.051^5 / 328e6)^(1/4) = 128.72 rounds the
   // same (0.6645 for nu = 0.3).
   thin_ice::IceParams ice;
   ice.thickness = 0.051;
@@ -140,7 +140,7 @@ TEST(EdgeCheck, ThePlateReadingBreaksAStraightEdgeAtPcrit) {
   // sigma_v = 6 |F_v| e^(-pi/4) l / (L_e h^2): each bond fails at
   // F_v = sigma_f L_e h^2 / (6 e^(-pi/4) l), so the cut carries sigma_f h^2 / (6 e^(-pi/4) l) per
   // metre = 108e3 * 0.051^2 / (6 * 0.455938 * 0.798313) = 128.63 N/m, the plate's P_crit
-  // (0.665 of SPEC-NOTES is e^(pi/4) (12 (1 - nu^2))^(1/4) / 6 = 0.6645 rounded: 128.72).
+  // (0.665 is e^(pi/4) (12 (1 - nu^2))^(1/4) / 6 = 0.6645 rounded: 128.72).
   const auto cut = squareGridCuts(thin_ice::VerticalStressModel::kPlate, 1).at(0);
   EXPECT_EQ(cut.failing_by_stress, 2);
   EXPECT_NEAR(cut.line_load, 128.627, 0.01);

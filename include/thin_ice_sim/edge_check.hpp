@@ -1,4 +1,4 @@
-// The edge-load check of SPEC-NOTES ("RMIB bonds"): how much vertical line load a free edge of the
+// The edge-load check (docs/model.md, "RMIB bonds"): how much vertical line load a free edge of the
 // model's sheet carries before a bond fails, beside the floating-plate theory it should approach.
 // Quasi-static: each bond's capacity comes from sweeping a pure vertical offset dz through the
 // bond law itself (rmibBondForce, Eqs. 11-13), with no horizontal strain and no motion.
@@ -47,10 +47,10 @@ LargestVerticalStress largestVerticalStress(const BondRest& rest, const BondCons
 /// among equals); -1 where the model has no bond.
 int bondNearestLength(const Model& model, double distance);
 
-/// The floating semi-infinite plate of SPEC-NOTES: the characteristic length
+/// The floating semi-infinite plate: the characteristic length
 /// l = [E h^3 / (12 (1 - nu^2) rho_w g)]^(1/4) [m] and the edge line load at first failure
 /// P_crit = sigma_f h^2 / (6 e^(-pi/4) l) [N/m]: the largest moment under an edge load P is
-/// e^(-pi/4) P l, 1.11 l from the edge. For nu = 0.3 this is SPEC-NOTES'
+/// e^(-pi/4) P l, 1.11 l from the edge. For nu = 0.3 this is the rounded
 /// 0.665 sigma_f (rho_w g h^5 / E)^(1/4) (0.6645); written through l it stays consistent with the
 /// `plate` reading of sigma_v for any nu.
 struct FloatingPlateEdge {

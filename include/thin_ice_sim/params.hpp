@@ -13,7 +13,7 @@ namespace thin_ice {
 /// How the vertical bond stress sigma_v of Eq. (13) is formed from the vertical bond force F_v.
 enum class VerticalStressModel {
   kShear,    ///< sigma_v = |F_v| / (h L_e): the paper's "force over the bond section"
-  kBending,  ///< sigma_v = 6 M / (L_e h^2), M = |F_v| d_ij / 2: clamped-beam bending (SPEC-NOTES)
+  kBending,  ///< sigma_v = 6 M / (L_e h^2), M = |F_v| d_ij / 2: clamped-beam bending (docs/model.md)
   kPlate,    ///< sigma_v = 6 M / (L_e h^2), M = |F_v| e^(-pi/4) l: the floating plate's moment arm
 };
 

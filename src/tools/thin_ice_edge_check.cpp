@@ -1,4 +1,4 @@
-// thin_ice_edge_check: the edge-load check of SPEC-NOTES for one or more scenarios. Prints, as a
+// thin_ice_edge_check: the edge-load check (a free edge against a floating plate's P_crit) for one or more scenarios. Prints, as a
 // Markdown table, the vertical line load at which straight cuts near the sheet's front edge fail
 // (the bond law swept quasi-statically over a rigid strip, thin_ice_sim/edge_check.hpp) beside
 // the floating plate's P_crit and characteristic length l, and the sum of the bonds' own peaks.

@@ -1,5 +1,5 @@
 // RMIB static bonds between cells that share a Voronoi edge at t = 0, paper Eqs. (8)-(13), read
-// as SPEC-NOTES fixes them.
+// as this project reads them (docs/model.md).
 //   anchors   p_i = c_i + R(theta_i) a_i, p_j = c_j + R(theta_j) a_j (the edge midpoint at t = 0)
 //   Eq. (8)   du = p_j - p_i (horizontal), dz = z_j - z_i
 //   Eq. (9)   u_n = du . n, n = rest normal turned by the mean yaw of the pair
@@ -40,7 +40,7 @@ struct BondRest {
   double damping_vertical;
 };
 
-/// How sigma_v of Eq. (13) is read from the vertical bond force F_v (SPEC-NOTES, "RMIB bonds").
+/// How sigma_v of Eq. (13) is read from the vertical bond force F_v (docs/model.md, "RMIB bonds").
 enum VerticalStressReading : int {
   kVerticalShear = 0,    ///< |F_v| / (h L_e): the paper's "force over the bond section"
   kVerticalBending = 1,  ///< 6 M / (L_e h^2), M = |F_v| d / 2: a clamped beam between the centroids
@@ -115,7 +115,7 @@ TIS_HD double verticalBondStress(double vertical_force, const BondRest& b, const
   }
 }
 
-/// Eq. (13) with the pure-compression limit of SPEC-NOTES, and torn through when the cells are
+/// Eq. (13) with the pure-compression limit (docs/model.md), and torn through when the cells are
 /// offset vertically by the whole thickness (|dz| >= h: no face left in common; K_n = K_v = 0
 /// there, so Eq. (13) alone would keep such a bond, carrying shear, for ever).
 /// sigma_comp of Eq. (13)'s vertical threshold is the bond's present compression sigma_c (docs/model.md:

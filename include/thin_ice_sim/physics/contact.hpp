@@ -1,5 +1,5 @@
 // Dynamic (DEM) contact between two cells whose polygons overlap, paper Eqs. (1)-(4) read as
-// SPEC-NOTES fixes them:
+// this project reads them (docs/model.md):
 //   F_n = K_n(z) (3E/(1-nu)) Z d          Eq. (1) x h^3 with the face height h replaced by the
 //                                         vertical overlap Z (= h for level cells) and the depth
 //                                         d = min(S/L, Z): S/L is the mean overlap depth, so this

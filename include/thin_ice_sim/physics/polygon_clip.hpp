@@ -1,5 +1,5 @@
 // Intersection of two convex polygons in integer arithmetic (paper, Section 3 "Polygon
-// intersection kernel"; SPEC-NOTES "Dynamic (DEM) contacts").
+// intersection kernel"; docs/geometry.md).
 //
 // What it returns feeds Eqs. (1)-(4): the overlap area S_ij, the centroid of the overlap (where
 // the contact force acts), and the chord joining the two points where the boundaries cross,

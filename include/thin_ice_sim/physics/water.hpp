@@ -1,4 +1,4 @@
-// Gravity, buoyancy and water drag on one cell (SPEC-NOTES "Water, bottom, gravity"; the paper's
+// Gravity, buoyancy and water drag on one cell (docs/model.md "Water, bottom, walls"; the paper's
 // damping matrix [C] of Eq. (16)). Water level at z = 0, z up; a cell spans z - h/2 .. z + h/2.
 #pragma once
 
