@@ -126,7 +126,7 @@ def compare_plot(root, sid, names, histories):
 EXPERIMENT_MEAN = {"W": 8600.0, "M": 7820.0, "S": 13750.0}
 ICE_TYPE = {"W": "weak", "M": "medium", "S": "strong"}
 WINDOW_M = 0.5  # width of the windows in which the long runs' loads are averaged [m]
-READING = "edge_face"  # ice.vertical_slip_friction of the scenarios as they stand
+READING = "edge_face"  # the contact friction of the engine (once ice.vertical_slip_friction, removed by issue #31)
 ARCHIVE = "level_only"  # docs/validation/level_only/: the runs of the reading every run had until 2026-12-02
 
 
@@ -151,7 +151,7 @@ LONG_RUN = re.compile(r"[WMS]-\d(-[a-z]\w*)?-long")  # group 1: a variant of the
 
 def long_run_entries(runs, histories, reading):
     """The runs past the matrix's length (named ID-long, or ID-VARIANT-long) among `runs`, each with
-    its history and the model it ran: the reading of ice.vertical_slip_friction and the variant."""
+    its history and the model it ran: the contact friction's reading (edge_face or level_only) and the variant."""
     return [{"name": n, "label": n if reading == READING else f"{n} ({reading})", "summary": runs[n],
              "history": histories[n], "model": (reading, LONG_RUN.fullmatch(n).group(1))}
             for n in sorted(runs)
@@ -578,8 +578,9 @@ def main():
              "floating-plate value, alpha = 0.63; \"Phase 2\" below says how it was chosen). The tables after it are "
              "of the reading before phase 2 (E_v from the floating-plate length, alpha = 1), kept until the runs at "
              "the new reading reach their lengths. "
-             f"Within the tables the reading is ice.vertical_slip_friction: {READING}. "
-             f"The runs made before that key entered them (level_only, until 2026-12-02) are in docs/validation/{ARCHIVE}/ "
+             f"Within the tables the contact friction is the engine's ({READING}: the edge face of offset cells "
+             "resists their vertical slip). "
+             f"The runs made without it ({ARCHIVE}, until 2026-12-02) are in docs/validation/{ARCHIVE}/ "
              "and in their own section further down." if archived else "", "",
              ]
     # The scenarios' reading first (issue #31): every series from the validation strips and the
@@ -643,7 +644,7 @@ def main():
         lines += layer_sections
 
     if archived:
-        lines += [f"## The runs of the earlier reading (ice.vertical_slip_friction: {ARCHIVE})", "",
+        lines += [f"## The runs of the earlier reading (no friction on the edge face: {ARCHIVE})", "",
                   "Until 2026-12-02 every run let two cells at different heights slide past each other vertically",
                   "without friction (docs/model.md, \"DEM contacts\"). These runs, their seeds, resolution checks and",
                   f"experiments are kept in docs/validation/{ARCHIVE}/ under the names the calibration notes below",

@@ -33,7 +33,6 @@ BondConstants constants(double exponent_v, double sigma_f) {
   c.flexural_strength = sigma_f;
   c.compressive_strength = 1e9;
   c.compression_coupling = 0.4;
-  c.vertical_stress = thin_ice::kVerticalBending;
   return c;
 }
 
@@ -107,24 +106,23 @@ TEST(EdgeCheck, FloatingPlateOfMediumIce) {
 // Cuts behind the front edge of a 1 m x 0.4 m sheet of unjittered 0.2 m squares (two rows of
 // five cells, default ice: E = E_v = 328 MPa, h = 0.051 m, sigma_f = 108 kPa): every cut crosses
 // the two bonds between neighbouring columns, each with L_e = d = 0.2 m.
-std::vector<thin_ice::EdgeCutCapacity> squareGridCuts(thin_ice::VerticalStressModel reading, int cuts) {
+std::vector<thin_ice::EdgeCutCapacity> squareGridCuts(int cuts) {
   thin_ice::Params p;
   p.sheet.length = 1.0;
   p.sheet.width = 0.4;
   p.sheet.cell_size = 0.2;
   p.sheet.jitter = 0.0;
   p.sheet.lloyd_iterations = 0;
-  p.ice.vertical_stress = reading;
   p.numerics.time_step = 1e-7;
   const thin_ice::IceSheet sheet = thin_ice::generateIceSheet(p.sheet);
   return thin_ice::edgeCutCapacities(thin_ice::buildModel(p, sheet, "test"), sheet, cuts);
 }
 
 TEST(EdgeCheck, ACutThroughASquareGridFailsAtTheSumOfItsBonds) {
-  // Bending reading (E_v = E, so sigma_v reaches sigma_f): each bond fails by Eq. (13) at
+  // sigma_v = 3 |F_v| d / (L_e h^2) (E_v = E, so sigma_v reaches sigma_f): each bond fails by Eq. (13) at
   // F_v = sigma_f L_e h^2 / (3 d) = 108e3 * 0.051^2 / 3 = 93.64 N, and the cut carries
   // 2 * 93.636 / 0.4 = 468.18 N per metre of edge.
-  const auto cuts = squareGridCuts(thin_ice::VerticalStressModel::kBending, 2);
+  const auto cuts = squareGridCuts(2);
   ASSERT_EQ(cuts.size(), 2u);
   for (const auto& cut : cuts) {
     EXPECT_EQ(cut.bonds, 2);
@@ -134,16 +132,6 @@ TEST(EdgeCheck, ACutThroughASquareGridFailsAtTheSumOfItsBonds) {
   }
   EXPECT_DOUBLE_EQ(cuts[0].distance_from_edge, 0.2);
   EXPECT_DOUBLE_EQ(cuts[1].distance_from_edge, 0.4);
-}
-
-TEST(EdgeCheck, ThePlateReadingBreaksAStraightEdgeAtPcrit) {
-  // sigma_v = 6 |F_v| e^(-pi/4) l / (L_e h^2): each bond fails at
-  // F_v = sigma_f L_e h^2 / (6 e^(-pi/4) l), so the cut carries sigma_f h^2 / (6 e^(-pi/4) l) per
-  // metre = 108e3 * 0.051^2 / (6 * 0.455938 * 0.798313) = 128.63 N/m, the plate's P_crit
-  // (0.665 is e^(pi/4) (12 (1 - nu^2))^(1/4) / 6 = 0.6645 rounded: 128.72).
-  const auto cut = squareGridCuts(thin_ice::VerticalStressModel::kPlate, 1).at(0);
-  EXPECT_EQ(cut.failing_by_stress, 2);
-  EXPECT_NEAR(cut.line_load, 128.627, 0.01);
 }
 
 }  // namespace

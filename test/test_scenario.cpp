@@ -177,7 +177,6 @@ TEST(Scenario, M2ReproducesTable5AndTable4) {
   expectNear(1.0, p.ice.smoothing_exponent_h, "n (Table 1, medium)");
   expectNear(1.0, p.ice.smoothing_exponent_v, "n_v");
   EXPECT_NEAR(p.ice.compression_coupling, 0.5 * 108.0 / 130.0, 1e-3);
-  EXPECT_EQ(p.ice.vertical_stress, VerticalStressModel::kBending);
   // Table 4 set-up.
   expectNear(10.0, p.structure.width, "structure width");
   expectNear(1.0, p.structure.height, "structure height");
@@ -254,13 +253,6 @@ TEST(Scenario, ValidateParamsAcceptsDefaultsAndNamesTheSource) {
 
 // ----- Overrides and defaults -----------------------------------------------------------------
 
-TEST_F(ScenarioFileTest, EveryVerticalStressReadingParses) {
-  const std::string path = kScenarioDir + "quick.yaml";
-  EXPECT_EQ(loadScenario(path, {"ice.vertical_stress=bending"}).params.ice.vertical_stress, VerticalStressModel::kBending);
-  EXPECT_EQ(loadScenario(path, {"ice.vertical_stress=plate"}).params.ice.vertical_stress, VerticalStressModel::kPlate);
-  EXPECT_EQ(loadScenario(path, {"ice.vertical_stress=shear"}).params.ice.vertical_stress, VerticalStressModel::kShear);
-}
-
 TEST_F(ScenarioFileTest, FilesAreReadWithinBoundsAndEchoedReadably) {
   // Each refused in one line naming the file: a device read until memory ran out, a file over
   // 1 MiB, a second YAML document that was ignored, a long scalar echoed whole, raw bytes echoed.
@@ -320,7 +312,11 @@ TEST_F(ScenarioFileTest, TheReadingsTheRunsRejectedAreRefusedWithTheReason) {
                          Bad{"ice.plate_bending=false", "ice.plate_bending",
                              "was removed: the Kirchhoff plate term (beyond the paper)"},
                          Bad{"ice.vertical_contact_depth=shallower", "ice.vertical_contact_depth",
-                             "was removed: the depth min(Z, S/L)"}}) {
+                             "was removed: the depth min(Z, S/L)"},
+                         Bad{"ice.vertical_stress=shear", "ice.vertical_stress",
+                             "was removed: sigma_v of Eq. (13) is the bending stress"},
+                         Bad{"ice.vertical_slip_friction=level_only", "ice.vertical_slip_friction",
+                             "was removed: the edge face of offset cells always resists"}}) {
     try {
       loadScenario(path, {bad.set});
       ADD_FAILURE() << bad.set << " was accepted";
@@ -332,37 +328,15 @@ TEST_F(ScenarioFileTest, TheReadingsTheRunsRejectedAreRefusedWithTheReason) {
   }
 }
 
-TEST_F(ScenarioFileTest, VerticalSlipFrictionIsOptionalAndTakesEitherReading) {
-  const std::string path = kScenarioDir + "quick.yaml";
-  // Left out, the key takes the reading the shipped scenarios name.
-  const std::string without = write("without.yaml", withLine(quick_, "ice", "vertical_slip_friction", ""));
-  EXPECT_EQ(loadScenario(without).params.ice.vertical_slip_friction, VerticalSlipFrictionModel::kEdgeFace);
-  EXPECT_EQ(loadScenario(without, {"ice.vertical_slip_friction=level_only"}).params.ice.vertical_slip_friction,
-            VerticalSlipFrictionModel::kLevelOnly);
-  EXPECT_EQ(loadScenario(path, {"ice.vertical_slip_friction=edge_face"}).params.ice.vertical_slip_friction,
-            VerticalSlipFrictionModel::kEdgeFace);
-  EXPECT_EQ(loadScenario(path, {"ice.vertical_slip_friction=level_only"}).params.ice.vertical_slip_friction,
-            VerticalSlipFrictionModel::kLevelOnly);
-  try {
-    loadScenario(path, {"ice.vertical_slip_friction=sticky"});
-    FAIL() << "an unknown reading was accepted";
-  } catch (const ScenarioError& e) {
-    const std::string m = e.what();
-    EXPECT_NE(m.find("ice.vertical_slip_friction"), std::string::npos) << m;
-    EXPECT_NE(m.find("expected level_only or edge_face"), std::string::npos) << m;
-    EXPECT_NE(m.find("sticky"), std::string::npos) << m;
-  }
-}
-
 TEST_F(ScenarioFileTest, OverridesApplyAfterTheFileAndChangeTheHash) {
   const std::string path = kScenarioDir + "quick.yaml";
   const Scenario base = loadScenario(path);
-  const std::vector<std::string> overrides = {"ice.thickness=0.06", "ice.vertical_stress=shear",
+  const std::vector<std::string> overrides = {"ice.thickness=0.06", "ice.friction_ice_ice=0.25",
                                               "structure.panels=4", "bottom.enabled=false",
                                               "sheet.seed=42"};
   const Scenario s = loadScenario(path, overrides);
   EXPECT_EQ(s.params.ice.thickness, 0.06);
-  EXPECT_EQ(s.params.ice.vertical_stress, VerticalStressModel::kShear);
+  EXPECT_EQ(s.params.ice.friction_ice_ice, 0.25);
   EXPECT_EQ(s.params.structure.panels, 4);
   EXPECT_FALSE(s.params.bottom.enabled);
   EXPECT_EQ(s.params.sheet.seed, 42u);
@@ -415,8 +389,6 @@ TEST_F(ScenarioFileTest, WrongTypes) {
               {"sheet.seed", "expected a non-negative integer"});
   expectError("non-bool.yaml", withValue(quick_, "bottom", "enabled", "maybe"),
               {"bottom.enabled", "expected true or false", "'maybe'"});
-  expectError("bad-enum.yaml", withValue(quick_, "ice", "vertical_stress", "torsion"),
-              {"ice.vertical_stress", "expected shear, bending or plate", "'torsion'"});
   expectError("bad-layout.yaml", withValue(quick_, "sheet", "layout", "hexagonal"),
               {"sheet.layout", "expected jittered_grid or poisson_disk"});
 }

@@ -208,17 +208,6 @@ TEST(Simulation, TheStructuresFrictionLimitIsScaledToTheSubstep) {
   EXPECT_DOUBLE_EQ(m.constants.pusher.friction_rate_limit, beta / dt);
 }
 
-TEST(Simulation, TheVerticalSlipFrictionReadingReachesTheContactLaw) {
-  // ice.vertical_slip_friction selects the branch of demContactForce (physics/contact.hpp).
-  const IceSheet sheet = generateIceSheet(loadScenario(kQuick).params.sheet);
-  const Model level =
-      buildModel(loadScenario(kQuick, {"ice.vertical_slip_friction=level_only"}).params, sheet, "quick level_only");
-  const Model edge =
-      buildModel(loadScenario(kQuick, {"ice.vertical_slip_friction=edge_face"}).params, sheet, "quick edge_face");
-  EXPECT_EQ(level.constants.contact.vertical_slip_friction, kVerticalSlipLevelOnly);
-  EXPECT_EQ(edge.constants.contact.vertical_slip_friction, kVerticalSlipEdgeFace);
-}
-
 /// Every cell's state and the loads of a backend after `steps` steps: as they are compared bit for bit.
 struct EndState {
   std::vector<CellSnapshot> cells;

@@ -40,7 +40,7 @@ struct LargestVerticalStress {
   double offset = 0.0;  ///< [m] dz there
 };
 /// Sampled at `samples` offsets through bondUnderOffset, then refined by golden-section search
-/// about the best sample (sigma_v ~ u (1 - u)^n rises and falls once for every reading).
+/// about the best sample (sigma_v ~ u (1 - u)^n rises and falls once).
 LargestVerticalStress largestVerticalStress(const BondRest& rest, const BondConstants& constants, int samples = 4000);
 
 /// Index of the model's bond whose centroid distance d is nearest `distance` [m] (the lowest index
@@ -51,8 +51,7 @@ int bondNearestLength(const Model& model, double distance);
 /// l = [E h^3 / (12 (1 - nu^2) rho_w g)]^(1/4) [m] and the edge line load at first failure
 /// P_crit = sigma_f h^2 / (6 e^(-pi/4) l) [N/m]: the largest moment under an edge load P is
 /// e^(-pi/4) P l, 1.11 l from the edge. For nu = 0.3 this is the rounded
-/// 0.665 sigma_f (rho_w g h^5 / E)^(1/4) (0.6645); written through l it stays consistent with the
-/// `plate` reading of sigma_v for any nu.
+/// 0.665 sigma_f (rho_w g h^5 / E)^(1/4) (0.6645); written through l it holds for any nu.
 struct FloatingPlateEdge {
   double characteristic_length = 0.0;  ///< l [m]
   double critical_line_load = 0.0;     ///< P_crit [N/m]
@@ -63,9 +62,9 @@ FloatingPlateEdge floatingPlateEdge(const IceParams& ice, const WaterParams& wat
 /// whose cells lie on both sides carry all of a vertical line load applied beyond it. The part in
 /// front is taken as a rigid strip pushed down by a growing offset dz, the same for every bond;
 /// a bond that failed at a smaller offset carries nothing. The largest total force, over the
-/// width, is the line load at which the cut fails. Bonds that peak at the same offset (equal
-/// d with the `plate` reading; any d with `bending`, whose stress does not depend on d) give the
-/// sum of their peaks; otherwise they fail one after another and the cut carries less.
+/// width, is the line load at which the cut fails. The bending stress of a bond at a given offset
+/// does not depend on its length d, so its bonds peak at the same offset and the cut carries the
+/// sum of their peaks, unless some break by tension or tear through first.
 struct EdgeCutCapacity {
   double distance_from_edge = 0.0;  ///< [m]
   int bonds = 0;                    ///< bonds crossing the cut

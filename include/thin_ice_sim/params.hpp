@@ -10,21 +10,6 @@
 
 namespace thin_ice {
 
-/// How the vertical bond stress sigma_v of Eq. (13) is formed from the vertical bond force F_v.
-enum class VerticalStressModel {
-  kShear,    ///< sigma_v = |F_v| / (h L_e): the paper's "force over the bond section"
-  kBending,  ///< sigma_v = 6 M / (L_e h^2), M = |F_v| d_ij / 2: clamped-beam bending (docs/model.md)
-  kPlate,    ///< sigma_v = 6 M / (L_e h^2), M = |F_v| e^(-pi/4) l: the floating plate's moment arm
-};
-
-/// What resists the vertical slip of two cells in contact at different heights (friction is not
-/// in the paper; physics/contact.hpp, docs/model.md).
-enum class VerticalSlipFrictionModel {
-  kLevelOnly,  ///< only level cells: at an offset, friction acts on the horizontal slip alone
-  kEdgeFace,   ///< also the edge face that carries F_n: mu F_n against the vertical slip along it
-               ///< (the default since 2026-12-02: docs/validation/calibration.md)
-};
-
 struct IceParams {
   double thickness = 0.051;             ///< h [m]
   double density = 920.0;               ///< rho_i [kg/m^3]
@@ -36,9 +21,7 @@ struct IceParams {
   double smoothing_exponent_h = 1.0;    ///< n of K_n (Eq. 6) for horizontal forces [-]
   double smoothing_exponent_v = 1.0;    ///< n of K_v (Eq. 6) for vertical forces [-]
   double compression_coupling = 0.0;    ///< k of Eq. (13) [-]
-  VerticalStressModel vertical_stress = VerticalStressModel::kBending;
   double friction_ice_ice = 0.3;        ///< Coulomb coefficient between cells [-]
-  VerticalSlipFrictionModel vertical_slip_friction = VerticalSlipFrictionModel::kEdgeFace;
   double contact_damping_ratio = 0.2;   ///< zeta of DEM contacts (fraction of critical) [-]
   double bond_damping_ratio = 0.2;      ///< zeta of RMIB bonds [-]
 };

@@ -18,7 +18,7 @@ namespace {
 /// Exponent codes of the kernels: 0 as the scenario gives (scalar), 1: n = 1, 2: n = 2, 3: n = 1/2.
 constexpr double exponentOfCode(int code) { return code == 1 ? 1.0 : (code == 2 ? 2.0 : 0.5); }
 
-template <int kExponentCode, int kReading>
+template <int kExponentCode>
 long long forceBlock(const Model& model, const BondRestColumns& r, int first, int count,
                      const CellMotion* __restrict motion, const Vec2* __restrict turn,
                      PairLoad* __restrict load, long long* __restrict breaks) {
@@ -26,7 +26,6 @@ long long forceBlock(const Model& model, const BondRestColumns& r, int first, in
   BondConstants c = model.constants.bond;
   if (kExponentCode != 0) {
     c.exponent_h = c.exponent_v = exponentOfCode(kExponentCode);
-    c.vertical_stress = kReading;
   }
   const int* __restrict bond_i = model.bond_i.data();
   const int* __restrict bond_j = model.bond_j.data();
@@ -57,28 +56,16 @@ long long forceBlock(const Model& model, const BondRestColumns& r, int first, in
   return any_breaks;
 }
 
-/// The three readings of sigma_v for one exponent code.
-template <int kExponentCode>
-constexpr std::array<CpuBondPass::BlockKernel, 3> readings() {
-  return {&forceBlock<kExponentCode, kVerticalShear>, &forceBlock<kExponentCode, kVerticalBending>,
-          &forceBlock<kExponentCode, kVerticalPlate>};
-}
-
-/// The kernel for the scenario's constants: [exponent code][reading of sigma_v].
+/// The kernel for the scenario's exponents: one specialised for n = 1, 2 or 1/2 on both springs.
 CpuBondPass::BlockKernel kernelFor(const BondConstants& c, bool& vectorised) {
   int code = 0;
   if (c.exponent_h == c.exponent_v) {
     code = c.exponent_h == 1.0 ? 1 : (c.exponent_h == 2.0 ? 2 : (c.exponent_h == 0.5 ? 3 : 0));
   }
-  const int reading = c.vertical_stress;
-  if (code == 0 || reading < kVerticalShear || reading > kVerticalPlate) {
-    vectorised = false;
-    return &forceBlock<0, 0>;
-  }
-  using Table = std::array<std::array<CpuBondPass::BlockKernel, 3>, 3>;
-  static const Table kernels = {readings<1>(), readings<2>(), readings<3>()};
-  vectorised = true;
-  return kernels[code - 1][reading];
+  vectorised = code != 0;
+  constexpr std::array<CpuBondPass::BlockKernel, 4> kernels = {&forceBlock<0>, &forceBlock<1>, &forceBlock<2>,
+                                                               &forceBlock<3>};
+  return kernels[code];
 }
 
 }  // namespace

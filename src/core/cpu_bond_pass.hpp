@@ -2,11 +2,11 @@
 // in include/thin_ice_sim/physics/bond.hpp) for every bond, in a form the compiler vectorises.
 //
 // Why a separate pass: with the bond records as an array of 112-byte structures and the law's
-// branches on run-time constants (the smoothing exponent, the reading of sigma_v), the compiler
+// branches on a run-time constant (the smoothing exponent), the compiler
 // keeps the loop scalar, about 190 instructions a bond (docs/performance.md). Here the records
 // are held column by column (one array per field), the bonds are taken in blocks of kBondBlock,
-// and for the three exponents of Table 1 (n = 1, 2, 1/2, the same for K_n and K_v) and each
-// reading of sigma_v the law is compiled with those constants fixed, so that its branches fold
+// and for the three exponents of Table 1 (n = 1, 2, 1/2, the same for K_n and K_v) the law is
+// compiled with the exponent fixed, so that its branches fold
 // or become selects and the compiler computes four bonds per AVX2 instruction. Other exponents
 // take the same law on the same columns, scalar.
 //

@@ -10,19 +10,6 @@
 namespace thin_ice {
 namespace {
 
-int verticalStressReading(VerticalStressModel model) {
-  switch (model) {
-    case VerticalStressModel::kShear: return kVerticalShear;
-    case VerticalStressModel::kBending: return kVerticalBending;
-    case VerticalStressModel::kPlate: return kVerticalPlate;
-  }
-  return kVerticalShear;
-}
-
-int verticalSlipFrictionReading(VerticalSlipFrictionModel model) {
-  return model == VerticalSlipFrictionModel::kEdgeFace ? kVerticalSlipEdgeFace : kVerticalSlipLevelOnly;
-}
-
 constexpr double kPi = 3.14159265358979323846;
 
 ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
@@ -40,16 +27,13 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
                rate_limit,
                ice.compressive_strength,
                ice.contact_damping_ratio,
-               regularisation,
-               verticalSlipFrictionReading(ice.vertical_slip_friction)};
+               regularisation};
   c.bond = {h,
             ice.smoothing_exponent_h,
             ice.smoothing_exponent_v,
             ice.flexural_strength,
             ice.compressive_strength,
-            ice.compression_coupling,
-            verticalStressReading(ice.vertical_stress),
-            floatingPlateMomentArm(ice.youngs_modulus, ice.poisson_ratio, h, p.water.density, p.water.gravity)};
+            ice.compression_coupling};
   c.separation_gap_fraction = kSeparationGapFraction;
   c.water = {p.water.density,       p.water.gravity,        h, p.water.linear_drag,
              p.water.quadratic_drag, p.water.vertical_linear_drag, p.water.vertical_quadratic_drag};

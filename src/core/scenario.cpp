@@ -5,8 +5,7 @@
 // a map whose keys are the snake_case field names of the matching struct in params.hpp
 // (IceParams, IceSheetSpec, WaterParams, BottomParams, StructureParams, PusherParams,
 // ChannelParams, NumericsParams), plus an optional top-level `description:` text.
-//   Enums:    ice.vertical_stress: shear | bending | plate;  sheet.layout: jittered_grid | poisson_disk;
-//             ice.vertical_slip_friction: level_only | edge_face
+//   Enums:    sheet.layout: jittered_grid | poisson_disk
 //   Integers: structure.panels, sheet.lloyd_iterations, numerics.max_steps_between_rebuilds,
 //             numerics.structure_substeps,
 //             numerics.threads (signed), sheet.seed (unsigned 64 bit); decimal digits only.
@@ -16,7 +15,7 @@
 // Required keys (what makes one experiment differ from another; no silent default for them):
 //   ice.thickness ice.density ice.flexural_strength ice.compressive_strength
 //   ice.youngs_modulus ice.vertical_modulus ice.poisson_ratio ice.smoothing_exponent_h
-//   ice.smoothing_exponent_v ice.compression_coupling ice.vertical_stress
+//   ice.smoothing_exponent_v ice.compression_coupling
 //   sheet.length sheet.width sheet.cell_size structure.toe_x numerics.time_step
 // They must be in the file itself (an override cannot stand in for one). Every other key
 // (ice.friction_ice_ice and the two damping ratios included) takes its params.hpp default; the
@@ -146,25 +145,6 @@ T toInteger(const YAML::Node& n) {
   return value;
 }
 
-VerticalStressModel toVerticalStress(const YAML::Node& n) {
-  const std::string& s = plainScalar(n);
-  if (s == "shear") return VerticalStressModel::kShear;
-  if (s == "bending") return VerticalStressModel::kBending;
-  if (s == "plate") return VerticalStressModel::kPlate;
-  throw BadValue(describe(n));
-}
-
-/// The conversion of a key that names one of two readings: `first` or `second`.
-template <class Reading>
-auto eitherOf(const char* first, Reading first_value, const char* second, Reading second_value) {
-  return [=](const YAML::Node& n) {
-    const std::string& s = plainScalar(n);
-    if (s == first) return first_value;
-    if (s == second) return second_value;
-    throw BadValue(describe(n));
-  };
-}
-
 SeedLayout toLayout(const YAML::Node& n) {
   try {
     return parseSeedLayout(plainScalar(n), "sheet.layout");
@@ -269,13 +249,7 @@ const std::vector<Section>& sections() {
         number(&P::ice, &IceParams::smoothing_exponent_h, "smoothing_exponent_h", kExponent, kRequired),
         number(&P::ice, &IceParams::smoothing_exponent_v, "smoothing_exponent_v", kExponent, kRequired),
         number(&P::ice, &IceParams::compression_coupling, "compression_coupling", kCoupling, kRequired),
-        field(&P::ice, &IceParams::vertical_stress, "vertical_stress", "shear, bending or plate",
-              toVerticalStress, kRequired),
         number(&P::ice, &IceParams::friction_ice_ice, "friction_ice_ice", kFriction),
-        field(&P::ice, &IceParams::vertical_slip_friction, "vertical_slip_friction", "level_only or edge_face",
-              eitherOf("level_only", VerticalSlipFrictionModel::kLevelOnly, "edge_face",
-                       VerticalSlipFrictionModel::kEdgeFace),
-              false),
         number(&P::ice, &IceParams::contact_damping_ratio, "contact_damping_ratio", kDamping),
         number(&P::ice, &IceParams::bond_damping_ratio, "bond_damping_ratio", kDamping)}},
       {"sheet",
@@ -395,6 +369,13 @@ constexpr RetiredKey kRetiredKeys[] = {
     {"ice", "curvature_failure_scope", "it limited the curvature criterion, which was removed"},
     {"ice", "plate_bending",
      "the Kirchhoff plate term (beyond the paper) gave medium ice 1.4-1.9 times the paper's load to 3 m"},
+    {"ice", "vertical_stress",
+     "sigma_v of Eq. (13) is the bending stress 6 M/(L_e h^2), M = |F_v| d/2; the paper's |F_v|/(h L_e) (shear) "
+     "carried the same load but let the sheet slide to the toe, and the floating plate's arm (plate) served only "
+     "an edge check"},
+    {"ice", "vertical_slip_friction",
+     "the edge face of offset cells always resists their vertical slip; without it (level_only) a piece pressed "
+     "edge-on against another slid past it held by its buoyancy alone, and the piles did not form"},
 };
 
 const Field& findField(const Section& section, const std::string& key, const std::string& where) {

@@ -27,7 +27,7 @@ namespace thin_ice_tools {
 inline const std::set<std::string> kSwitchableKeys = {
     "ice.flexural_strength", "ice.compressive_strength", "ice.youngs_modulus", "ice.vertical_modulus",
     "ice.poisson_ratio", "ice.smoothing_exponent_h", "ice.smoothing_exponent_v", "ice.compression_coupling",
-    "ice.vertical_stress", "ice.vertical_slip_friction", "ice.friction_ice_ice", "ice.contact_damping_ratio", "ice.bond_damping_ratio",
+    "ice.friction_ice_ice", "ice.contact_damping_ratio", "ice.bond_damping_ratio",
     "water.linear_drag", "water.quadratic_drag", "water.vertical_linear_drag", "water.vertical_quadratic_drag",
     "structure.friction", "structure.stiffness", "channel.friction", "channel.stiffness", "bottom.friction",
     "bottom.stiffness", "bottom.depth", "pusher.friction", "pusher.stiffness", "numerics.friction_regularisation",

@@ -2,7 +2,7 @@
 // scenario, as JSON. The bond is the one of the scenario's sheet whose length d (centroid to
 // centroid) is nearest the cell size; a slope s sets its two cells a height step dz = s d apart,
 // with no horizontal strain. The tool gives:
-//   - sigma_v / sigma_f at each slope asked for (Eq. 13's sigma_v in the scenario's reading), and
+//   - sigma_v / sigma_f at each slope asked for (Eq. 13's sigma_v, the bond law's bending stress), and
 //     whether the bond breaks there;
 //   - the largest sigma_v / sigma_f that any step 0 < dz < h gives it, and at which slope (above 1
 //     the bond breaks on the way there, at the breaking slope);
@@ -44,14 +44,6 @@ double plateStressPerCurvature(double youngs_modulus, double poisson_ratio, doub
 int refuse(const std::string& message) {
   std::fprintf(stderr, "thin_ice_bond_offset: %s\n", message.c_str());
   return 2;
-}
-
-const char* readingName(int reading) {
-  switch (reading) {
-    case thin_ice::kVerticalBending: return "bending";
-    case thin_ice::kVerticalPlate: return "plate";
-    default: return "shear";
-  }
 }
 
 /// A JSON number; throws naming `what` where the value is not finite (JSON has no inf or NaN).
@@ -117,7 +109,7 @@ int main(int argc, char** argv) {
     const thin_ice::BondVerticalCapacity capacity = thin_ice::bondVerticalCapacity(rest, law);
 
     std::ostringstream json;
-    json << "{\"vertical_stress\": \"" << readingName(law.vertical_stress) << "\", \"thickness_m\": "
+    json << "{\"thickness_m\": "
          << number(p.ice.thickness, "h") << ",\n \"floating_centroid_z_m\": "
          << number(thin_ice::floatingCentroidHeight(p.ice.thickness, p.ice.density, p.water.density), "z at rest")
          << ",\n \"bond\": {\"index\": " << b << ", \"distance_m\": " << number(d, "d")

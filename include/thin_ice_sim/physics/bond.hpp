@@ -7,9 +7,10 @@
 //   Eq. (11-12) F_h = K_n(z) k_n u_n (tension > 0), F_s = k_s u_s, F_v = K_v(z) k_v dz
 //             k_n = E h L_e / d, k_s = G h L_e / d, k_v = G_v h L_e / d (bar of section h L_e)
 //   Eq. (13)  broken for good when sigma_v > sigma_f - k sigma_c, or sigma_h > sigma_f, or
-//             sigma_c > sigma_comp; sigma_h = F_h/(h L_e), sigma_c = max(0, -F_h)/(h L_e), sigma_v
-//             from F_v by the chosen reading (shear: |F_v|/(h L_e); bending: 6 M/(L_e h^2), M = |F_v| d/2;
-//             plate: 6 M/(L_e h^2), M = |F_v| e^(-pi/4) l, the floating plate's largest moment)
+//             sigma_c > sigma_comp; sigma_h = F_h/(h L_e), sigma_c = max(0, -F_h)/(h L_e), and
+//             sigma_v = 6 M/(L_e h^2) with M = |F_v| d/2, the bending stress of a bar clamped
+//             between the centroids (docs/model.md: a departure from the paper's |F_v|/(h L_e),
+//             chosen by runs)
 // Damping (ratio zeta of critical) acts on the anchor velocities; stresses use the elastic forces.
 #pragma once
 
@@ -40,15 +41,6 @@ struct BondRest {
   double damping_vertical;
 };
 
-/// How sigma_v of Eq. (13) is read from the vertical bond force F_v (docs/model.md, "RMIB bonds").
-enum VerticalStressReading : int {
-  kVerticalShear = 0,    ///< |F_v| / (h L_e): the paper's "force over the bond section"
-  kVerticalBending = 1,  ///< 6 M / (L_e h^2), M = |F_v| d / 2: a clamped beam between the centroids
-  kVerticalPlate = 2,    ///< 6 M / (L_e h^2), M = |F_v| e^(-pi/4) l: the moment arm of a floating
-                         ///< plate under an edge load (its largest moment, at 1.11 l), so that a
-                         ///< free edge fails at the plate's P_crit (docs/validation/calibration.md)
-};
-
 /// Characteristic length l = [E h^3 / (12 (1 - nu^2) rho_w g)]^(1/4) [m] of a floating plate.
 inline double floatingPlateLength(double youngs_modulus, double poisson_ratio, double thickness,
                                   double water_density, double gravity) {
@@ -58,8 +50,8 @@ inline double floatingPlateLength(double youngs_modulus, double poisson_ratio, d
 }
 
 /// Arm [m] of the floating plate's largest moment under an edge line load P: M_max = e^(-pi/4) P l,
-/// 1.11 l from the edge (semi-infinite beam on an elastic foundation). The `plate` reading of
-/// sigma_v and the edge check's P_crit = sigma_f h^2 / (6 arm) both take it from here.
+/// 1.11 l from the edge (semi-infinite beam on an elastic foundation). The edge check's
+/// P_crit = sigma_f h^2 / (6 arm) takes it from here.
 inline double floatingPlateMomentArm(double youngs_modulus, double poisson_ratio, double thickness,
                                      double water_density, double gravity) {
   const double e_minus_pi_over_4 = 0.45593812776599624;  // exp(-pi/4)
@@ -73,8 +65,6 @@ struct BondConstants {
   double flexural_strength;     ///< sigma_f [Pa]
   double compressive_strength;  ///< sigma_comp [Pa]
   double compression_coupling;  ///< k of Eq. (13) [-]
-  int vertical_stress;          ///< a VerticalStressReading
-  double plate_moment_arm;      ///< e^(-pi/4) l [m], used by kVerticalPlate
 };
 
 struct BondForce {
@@ -105,14 +95,13 @@ TIS_HD PairLoad bondLoad(const BondForce& f) {
   return {f.force_on_j, f.fz_on_j, {cross(f.arm_i, -f.force_on_j), cross(f.arm_j, f.force_on_j)}};
 }
 
-/// sigma_v of Eq. (13) in the scenario's reading (VerticalStressReading).
+/// sigma_v of Eq. (13) [Pa]: 6 M / (L_e h^2) with M = |F_v| d / 2, the surface stress of a bar of
+/// section L_e x h clamped at both centroids and offset by F_v. The paper's words give |F_v| / (h L_e);
+/// on weak-ice strips that reading carried the same load but let the sheet slide to the toe instead
+/// of failing in front of its rubble (docs/model.md, "Readings tried and rejected").
 TIS_HD double verticalBondStress(double vertical_force, const BondRest& b, const BondConstants& c) {
   const double h = c.thickness;
-  switch (c.vertical_stress) {
-    case kVerticalBending: return 3.0 * fabs(vertical_force) * b.distance / (b.edge_length * h * h);
-    case kVerticalPlate: return 6.0 * fabs(vertical_force) * c.plate_moment_arm / (b.edge_length * h * h);
-    default: return fabs(vertical_force) / (h * b.edge_length);
-  }
+  return 3.0 * fabs(vertical_force) * b.distance / (b.edge_length * h * h);
 }
 
 /// Eq. (13) with the pure-compression limit (docs/model.md), and torn through when the cells are

@@ -9,8 +9,9 @@
 //   both act at the overlap centroid; the yaw moment is (point - centroid) x F (Eq. 4).
 // Added, as every DEM needs: normal damping (ratio zeta of critical, never attractive) and
 // regularised Coulomb friction against the slip at the contact point; between cells at
-// different heights, either against the horizontal slip only or, with `edge_face`, also against
-// the vertical slip along the edge face that carries F_n (VerticalSlipFriction below).
+// different heights the edge face that carries F_n also resists the vertical slip along it
+// (docs/model.md, "DEM contacts": without it a piece pressed edge-on against another slid up or
+// down freely).
 // Three departures, each forced by a blow-up traced to it (docs/model.md, "Deviations"):
 //  - d = min(S/L, Z): two slabs that overlap by S/L across and by Z up and down are separated
 //    along the shallower of the two. A piece resting on another (Z ~ 1 mm, S/L ~ 0.1 m) used to
@@ -34,19 +35,6 @@
 
 namespace thin_ice {
 
-/// Which faces of two overlapping slabs resist their relative vertical slip (friction is not in
-/// the paper; docs/model.md, "DEM contacts", `ice.vertical_slip_friction`).
-enum VerticalSlipFriction : int {
-  /// Only level cells (dz = 0): at any offset the friction bound mu (F_n + F_v) acts against the
-  /// horizontal slip alone, so a piece pressed edge-on against another slides up or down freely.
-  kVerticalSlipLevelOnly = 0,
-  /// Also the edge face: the two slabs touch over a vertical face Z high that carries F_n, whose
-  /// friction (at most mu F_n) acts against the slip along that face, vertical and horizontal;
-  /// the overlap of top and bottom faces carries F_v, whose friction (at most mu F_v) acts against
-  /// the horizontal slip. For level cells (F_v = 0) this is the level-only reading.
-  kVerticalSlipEdgeFace = 1,
-};
-
 struct ContactConstants {
   double thickness;             ///< h [m]
   double plane_modulus;         ///< 3E/(1-nu) [Pa], Eq. (1)
@@ -58,7 +46,6 @@ struct ContactConstants {
   double crushing_strength;     ///< sigma_c [Pa]: F_n <= sigma_c Z L
   double damping_ratio;         ///< zeta [-]
   double regularisation_speed;  ///< [m/s]
-  int vertical_slip_friction;   ///< a VerticalSlipFriction: what resists vertical slip between offset cells
 };
 
 /// What a contact law needs of one body.
@@ -160,11 +147,10 @@ TIS_HD PairForce demContactForce(const PolygonOverlap& overlap, const BodyState&
   const double slip_z = j.vz - i.vz;
   const double slip_mass = 1.0 / (inverseSlipMass(i, overlap.centroid) + inverseSlipMass(j, overlap.centroid));
   const double scale_limit = c.friction_rate_limit * slip_mass;
-  // Two branches, not one formula for both readings: written as one, the fused multiply-adds
-  // round differently, and the committed runs no longer reproduce to the bit (tried 2026-12-02).
-  if (side != 0.0 && c.vertical_slip_friction == kVerticalSlipEdgeFace) {
-    // The edge face (normal n, force F_n) resists the slip along it in 3-D; the top and bottom
-    // faces (normal z, force F_v) the horizontal slip. Their sum on the horizontal slip stays
+  if (side != 0.0) {
+    // Cells at different heights touch over a vertical edge face Z high that carries F_n, and
+    // over their top and bottom faces, which carry F_v. The edge face resists the slip along it
+    // in 3-D; the top and bottom faces the horizontal slip. Their sum on the horizontal slip stays
     // within the explicit step's bound (friction.hpp); the vertical slip's effective mass,
     // m_i m_j / (m_i + m_j), is at least slip_mass, so the edge face's share is stable there too.
     const double edge = frictionScale(c.friction, normal, slip.x, slip.y, slip_z, c.regularisation_speed, scale_limit);
@@ -174,10 +160,10 @@ TIS_HD PairForce demContactForce(const PolygonOverlap& overlap, const BodyState&
     f.fz_on_j = side * vertical - edge * slip_z;
     return f;
   }
-  const double scale = frictionScale(c.friction, normal + vertical, slip.x, slip.y, side != 0.0 ? 0.0 : slip_z,
-                                     c.regularisation_speed, scale_limit);
+  // Level cells: F_v = 0, one bound mu F_n on the slip in every direction.
+  const double scale = frictionScale(c.friction, normal, slip.x, slip.y, slip_z, c.regularisation_speed, scale_limit);
   f.force_on_j = normal * n - scale * slip;
-  f.fz_on_j = side * vertical - (side != 0.0 ? 0.0 : scale * slip_z);
+  f.fz_on_j = -(scale * slip_z);
   return f;
 }
 
