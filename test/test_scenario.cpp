@@ -517,6 +517,25 @@ TEST(OverrideKey, NamesTheKeyAsTheParserReadsIt) {
       << section;
 }
 
+
+// The registry of keys says which may change under a run that is under way: the laws and the
+// contact planes may, the mesh, the masses, the geometry, the stepping and the calibration may not.
+TEST(SwitchableOnResume, TheRegistryMarksTheLawsAndNotTheMeshOrTheCalibration) {
+  for (const char* key : {"ice.friction_ice_ice", "ice.vertical_modulus", "ice.flexural_strength", "bottom.depth",
+                          "structure.friction", "water.quadratic_drag", "numerics.threads"}) {
+    EXPECT_TRUE(switchableOnResume(key)) << key;
+  }
+  for (const char* key : {"ice.thickness", "ice.density", "sheet.cell_size", "sheet.seed", "structure.toe_x",
+                          "structure.width", "structure.calibration_factor", "pusher.velocity",
+                          "numerics.time_step", "numerics.structure_substeps", "no.such_key", "ice"}) {
+    EXPECT_FALSE(switchableOnResume(key)) << key;
+  }
+  const std::vector<std::string> keys = switchableOnResumeKeys();
+  EXPECT_EQ(keys.size(), 27u);
+  // Every key listed is one the format knows, spelt as the override parser names it.
+  for (const std::string& key : keys) EXPECT_EQ(overrideKey(key + "=1", "f.yaml"), key);
+  EXPECT_EQ(keys.front(), "ice.flexural_strength");  // the order of the format, ice first
+}
 TEST_F(ScenarioFileTest, NonexistentFile) {
   const std::string path = (dir_ / "no-such-scenario.yaml").string();
   const std::string message = errorOf(path);

@@ -36,6 +36,14 @@ Scenario loadScenario(const std::string& path, const std::vector<std::string>& o
 /// `source`, for text that is not section.key=value or names no key of the scenario format.
 std::string overrideKey(const std::string& text, const std::string& source);
 
+/// Whether `key` ("section.key") may change at a resumption of a run under way (thin_ice_run
+/// --resume DIR --set): the laws and the contact planes' stiffness and friction may, the mesh, the
+/// geometry, the time stepping and the calibration may not. The registry of keys marks them.
+bool switchableOnResume(const std::string& key);
+
+/// Every key switchableOnResume allows, in the order of the scenario format.
+std::vector<std::string> switchableOnResumeKeys();
+
 /// Checks the physical and numerical ranges of `params` (everything that can be checked without
 /// building the sheet); `source` prefixes the message. Throws ScenarioError.
 void validateParams(const Params& params, const std::string& source);

@@ -33,6 +33,7 @@
 
 #include <yaml-cpp/yaml.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -178,6 +179,7 @@ struct Field {
   std::function<double(const Params&)> get;  ///< the value, for the range check (numbers only)
   Range range;                               ///< unused where `get` is empty
   bool integer = false;                      ///< the range reads "integer in [lo, hi]"
+  bool switchable = false;                   ///< may change at a resumption (switchableOnResume)
 };
 
 struct Section {
@@ -212,6 +214,18 @@ template <class S>
 Field flag(S Params::*section, bool S::*member, const char* key) {
   return field(section, member, key, "true or false", viaYaml<bool>, false);
 }
+/// Marks a key that `thin_ice_run --resume DIR --set` may change under a run that is under way:
+/// the laws of the ice, the water and the rigid planes (stiffness, friction), the friction's
+/// regularisation, the thread count, and the depth of the false bottom (not in the paper, so the
+/// one piece of geometry whose effect on a grown pile is worth testing; the runner refuses a depth
+/// that would cut ice already over the bottom). Not the mesh, the masses or the floating level
+/// (thickness, densities), the rest of the geometry, the pusher's speed (the checkpoint holds it),
+/// the time stepping (the rows are counted in steps from t = 0), or the calibration factor and the
+/// structure's width (the statistics of the whole history use them).
+Field onResume(Field f) {
+  f.switchable = true;
+  return f;
+}
 
 // Ranges: wide enough for every ice a test rig or a tank sees, from model-scale ice (tens of mm,
 // kPa strengths) to thick sea ice, and narrow enough to refuse what no ice or rig is (a value of
@@ -240,18 +254,19 @@ const std::vector<Section>& sections() {
       {"ice",
        {number(&P::ice, &IceParams::thickness, "thickness", kThickness, kRequired),
         number(&P::ice, &IceParams::density, "density", kIceDensity, kRequired),
-        number(&P::ice, &IceParams::flexural_strength, "flexural_strength", kStrength, kRequired),
-        number(&P::ice, &IceParams::compressive_strength, "compressive_strength", kStrength, kRequired),
-        number(&P::ice, &IceParams::youngs_modulus, "youngs_modulus", kModulus, kRequired),
-        number(&P::ice, &IceParams::vertical_modulus, "vertical_modulus", kModulus, kRequired),
-        number(&P::ice, &IceParams::poisson_ratio, "poisson_ratio",
-               {0.0, 0.5, kClosed, kOpen, "", "3E/(1-nu) and G = E/(2(1+nu)) need nu in [0, 0.5)"}, kRequired),
-        number(&P::ice, &IceParams::smoothing_exponent_h, "smoothing_exponent_h", kExponent, kRequired),
-        number(&P::ice, &IceParams::smoothing_exponent_v, "smoothing_exponent_v", kExponent, kRequired),
-        number(&P::ice, &IceParams::compression_coupling, "compression_coupling", kCoupling, kRequired),
-        number(&P::ice, &IceParams::friction_ice_ice, "friction_ice_ice", kFriction),
-        number(&P::ice, &IceParams::contact_damping_ratio, "contact_damping_ratio", kDamping),
-        number(&P::ice, &IceParams::bond_damping_ratio, "bond_damping_ratio", kDamping)}},
+        onResume(number(&P::ice, &IceParams::flexural_strength, "flexural_strength", kStrength, kRequired)),
+        onResume(number(&P::ice, &IceParams::compressive_strength, "compressive_strength", kStrength, kRequired)),
+        onResume(number(&P::ice, &IceParams::youngs_modulus, "youngs_modulus", kModulus, kRequired)),
+        onResume(number(&P::ice, &IceParams::vertical_modulus, "vertical_modulus", kModulus, kRequired)),
+        onResume(number(&P::ice, &IceParams::poisson_ratio, "poisson_ratio",
+                        {0.0, 0.5, kClosed, kOpen, "", "3E/(1-nu) and G = E/(2(1+nu)) need nu in [0, 0.5)"},
+                        kRequired)),
+        onResume(number(&P::ice, &IceParams::smoothing_exponent_h, "smoothing_exponent_h", kExponent, kRequired)),
+        onResume(number(&P::ice, &IceParams::smoothing_exponent_v, "smoothing_exponent_v", kExponent, kRequired)),
+        onResume(number(&P::ice, &IceParams::compression_coupling, "compression_coupling", kCoupling, kRequired)),
+        onResume(number(&P::ice, &IceParams::friction_ice_ice, "friction_ice_ice", kFriction)),
+        onResume(number(&P::ice, &IceParams::contact_damping_ratio, "contact_damping_ratio", kDamping)),
+        onResume(number(&P::ice, &IceParams::bond_damping_ratio, "bond_damping_ratio", kDamping))}},
       {"sheet",
        {number(&P::sheet, &IceSheetSpec::length, "length", kSize, kRequired),
         number(&P::sheet, &IceSheetSpec::width, "width", kSize, kRequired),
@@ -271,17 +286,17 @@ const std::vector<Section>& sections() {
                {900.0, 1100.0, kClosed, kClosed, " kg/m^3", "fresh to sea water, with room"}),
         number(&P::water, &WaterParams::gravity, "gravity",
                {1.0, 30.0, kClosed, kClosed, " m/s^2", "a test rig on Earth has 9.81"}),
-        number(&P::water, &WaterParams::linear_drag, "linear_drag", kDrag),
-        number(&P::water, &WaterParams::quadratic_drag, "quadratic_drag", kDrag),
-        number(&P::water, &WaterParams::vertical_linear_drag, "vertical_linear_drag", kDrag),
-        number(&P::water, &WaterParams::vertical_quadratic_drag, "vertical_quadratic_drag", kDrag)}},
+        onResume(number(&P::water, &WaterParams::linear_drag, "linear_drag", kDrag)),
+        onResume(number(&P::water, &WaterParams::quadratic_drag, "quadratic_drag", kDrag)),
+        onResume(number(&P::water, &WaterParams::vertical_linear_drag, "vertical_linear_drag", kDrag)),
+        onResume(number(&P::water, &WaterParams::vertical_quadratic_drag, "vertical_quadratic_drag", kDrag))}},
       {"bottom",
        {flag(&P::bottom, &BottomParams::enabled, "enabled"),
         number(&P::bottom, &BottomParams::distance_from_structure, "distance_from_structure", kDistance),
-        number(&P::bottom, &BottomParams::depth, "depth",
-               {0.0, 100.0, kOpen, kClosed, " m", "the water depth over a false bottom"}),
-        number(&P::bottom, &BottomParams::friction, "friction", kFriction),
-        number(&P::bottom, &BottomParams::stiffness, "stiffness", kContactStiffness)}},
+        onResume(number(&P::bottom, &BottomParams::depth, "depth",
+               {0.0, 100.0, kOpen, kClosed, " m", "the water depth over a false bottom"})),
+        onResume(number(&P::bottom, &BottomParams::friction, "friction", kFriction)),
+        onResume(number(&P::bottom, &BottomParams::stiffness, "stiffness", kContactStiffness))}},
       {"structure",
        {number(&P::structure, &StructureParams::toe_x, "toe_x", kPosition, kRequired),
         number(&P::structure, &StructureParams::angle_deg, "angle_deg",
@@ -291,20 +306,20 @@ const std::vector<Section>& sections() {
         integer(&P::structure, &StructureParams::panels, "panels",
                 {1.0, 1000.0, kClosed, kClosed, "", "the structure needs at least one panel"}),
         number(&P::structure, &StructureParams::side_panel_length, "side_panel_length", kDistance),
-        number(&P::structure, &StructureParams::stiffness, "stiffness", kContactStiffness),
+        onResume(number(&P::structure, &StructureParams::stiffness, "stiffness", kContactStiffness)),
         number(&P::structure, &StructureParams::calibration_factor, "calibration_factor",
                {0.0, 10.0, kOpen, kClosed, "", "alpha of Eq. (18) is 0.63 in the paper"}),
-        number(&P::structure, &StructureParams::friction, "friction", kFriction)}},
+        onResume(number(&P::structure, &StructureParams::friction, "friction", kFriction))}},
       {"pusher",
        {number(&P::pusher, &PusherParams::velocity, "velocity",
                {-10.0, 10.0, kClosed, kClosed, " m/s", "test rigs push at mm/s to a few m/s (the paper: 0.05)"}),
-        number(&P::pusher, &PusherParams::stiffness, "stiffness", kContactStiffness),
-        number(&P::pusher, &PusherParams::friction, "friction", kFriction)}},
+        onResume(number(&P::pusher, &PusherParams::stiffness, "stiffness", kContactStiffness)),
+        onResume(number(&P::pusher, &PusherParams::friction, "friction", kFriction))}},
       {"channel",
        {flag(&P::channel, &ChannelParams::enabled, "enabled"),
         number(&P::channel, &ChannelParams::width, "width", kSize),
-        number(&P::channel, &ChannelParams::stiffness, "stiffness", kContactStiffness),
-        number(&P::channel, &ChannelParams::friction, "friction", kFriction)}},
+        onResume(number(&P::channel, &ChannelParams::stiffness, "stiffness", kContactStiffness)),
+        onResume(number(&P::channel, &ChannelParams::friction, "friction", kFriction))}},
       {"numerics",
        {number(&P::numerics, &NumericsParams::time_step, "time_step",
                {0.0, 1.0, kOpen, kClosed, " s", "an explicit step (the critical step refuses more, naming it)"},
@@ -322,16 +337,16 @@ const std::vector<Section>& sections() {
                {0.0, 10.0, kOpen, kClosed, "", "a fraction of l-bar"}),
         number(&P::numerics, &NumericsParams::rebuild_rotation_deg, "rebuild_rotation_deg",
                {0.0, 45.0, kOpen, kClosed, " deg", "delta_rot must be a small positive angle"}),
-        number(&P::numerics, &NumericsParams::friction_regularisation, "friction_regularisation",
-               {0.0, 10.0, kOpen, kClosed, " m/s", "a slip speed"}),
-        number(&P::numerics, &NumericsParams::friction_viscous_limit, "friction_viscous_limit",
-               {0.0, 2.0, kOpen, kOpen, "", "an explicit step of viscous friction is stable below 2 m_eff/dt"}),
+        onResume(number(&P::numerics, &NumericsParams::friction_regularisation, "friction_regularisation",
+               {0.0, 10.0, kOpen, kClosed, " m/s", "a slip speed"})),
+        onResume(number(&P::numerics, &NumericsParams::friction_viscous_limit, "friction_viscous_limit",
+               {0.0, 2.0, kOpen, kOpen, "", "an explicit step of viscous friction is stable below 2 m_eff/dt"})),
         // At load time, whatever the machine: above kMaxThreads is no machine's core count (the
         // runner caps a valid count at the cores present, and says so).
-        integer(&P::numerics, &NumericsParams::threads, "threads",
+        onResume(integer(&P::numerics, &NumericsParams::threads, "threads",
                 {0.0, static_cast<double>(kMaxThreads), kClosed, kClosed,
                  " (0 = all cores; more than the cores present are capped at them)",
-                 "a thread count"})}},
+                 "a thread count"}))}},
   };
   return table;
 }
@@ -626,6 +641,21 @@ void validateParams(const Params& params, const std::string& source) {
 std::string overrideKey(const std::string& text, const std::string& source) {
   const auto [section, field] = overrideTarget(text, source + ": override '" + text + "': ");
   return section->name + "." + field->key;
+}
+
+std::vector<std::string> switchableOnResumeKeys() {
+  std::vector<std::string> keys;
+  for (const Section& s : sections()) {
+    for (const Field& f : s.fields) {
+      if (f.switchable) keys.push_back(s.name + "." + f.key);
+    }
+  }
+  return keys;
+}
+
+bool switchableOnResume(const std::string& key) {
+  const std::vector<std::string> keys = switchableOnResumeKeys();
+  return std::find(keys.begin(), keys.end(), key) != keys.end();
 }
 
 Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides) {

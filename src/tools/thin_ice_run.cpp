@@ -17,7 +17,7 @@
 // the summary's wall time is the sum of the segments. --snapshots N then spreads N snapshots over
 // the new segment, the last at its end. --set with --resume switches a law on from the resumption
 // (e.g. ice.friction_ice_ice=0.6): the override joins the run's, and the summary's overrides_from_m
-// says from which L it holds. Only the keys of kSwitchableKeys (resume_switch.hpp) are taken there,
+// says from which L it holds. Only the keys the scenario registry marks switchable are taken there,
 // and not a value under which the run's time step is unstable, nor a false bottom raised through
 // the ice over it.
 // Exit status: 0 done; 1 I/O or backend failure; 2 bad arguments or scenario, or a run directory
