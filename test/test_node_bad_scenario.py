@@ -80,6 +80,12 @@ class BadScenarioTest(unittest.TestCase):
         self.assertIn("~load_rate = 0.001", output)
         self.assertIn("allowed: 1 to", output)
 
+    def test_a_negative_load_arrow_scale_is_refused(self):
+        result = self.run_node("_scenario:=quick", "_load_arrow_scale:=-0.003")
+        output = result.stdout + result.stderr
+        self.assertNotEqual(result.returncode, 0, output)
+        self.assertIn("~load_arrow_scale = -0.003 is invalid; allowed: 0 or 1e-06 to 1 m per N/m", output)
+
     def test_set_item_that_is_not_a_string_is_refused(self):
         # A colon typed for '=' makes a YAML dictionary: named, not a crash of the node.
         self.private_parameter("set", ["sheet.length=1.0", {"numerics.threads": 2}])

@@ -7,6 +7,7 @@ structure.
 """
 import math
 import os
+import re
 import threading
 import time
 import unittest
@@ -19,7 +20,7 @@ import yaml
 from geometry_msgs.msg import Twist, WrenchStamped
 from rosgraph_msgs.msg import Clock
 from std_srvs.srv import Empty, Trigger
-from visualization_msgs.msg import MarkerArray
+from visualization_msgs.msg import Marker, MarkerArray
 
 from thin_ice_sim.msg import PanelLoads, SimStatus
 from thin_ice_sim.srv import Step
@@ -27,7 +28,10 @@ from thin_ice_sim.srv import Step
 LOAD_PERIOD = 0.01  # [s] of simulated time: 1 / ~load_rate
 # [s] quick.yaml's dt, read from the file so that a new step there does not break these tests
 with open(os.path.join(rospkg.RosPack().get_path("thin_ice_sim"), "config", "scenarios", "quick.yaml")) as f:
-    TIME_STEP = float(yaml.safe_load(f)["numerics"]["time_step"])
+    QUICK = yaml.safe_load(f)
+TIME_STEP = float(QUICK["numerics"]["time_step"])
+TOE_X = 2.0  # [m] structure.toe_x as node_interface.test sets it
+LOAD_ARROW_SCALE = 0.003  # [m per N/m of structure width] ~load_arrow_scale's default
 
 
 class NodeInterfaceTest(unittest.TestCase):
@@ -135,7 +139,7 @@ class NodeInterfaceTest(unittest.TestCase):
     def test_02_markers_arrive(self):
         self.wait_for(lambda: self.markers is not None, 30.0, "ice/cells markers")
         namespaces = {m.ns: m for m in self.markers.markers}
-        for ns in ("cells", "outlines", "structure", "pusher", "bottom"):
+        for ns in ("cells", "outlines", "structure", "pusher", "bottom", "load", "readout", "legend"):
             self.assertIn(ns, namespaces)
         self.assertGreater(len(namespaces["cells"].points), 0)
         self.assertEqual(len(namespaces["cells"].points), len(namespaces["cells"].colors))
@@ -217,6 +221,26 @@ class NodeInterfaceTest(unittest.TestCase):
         self.wait_for(loaded, 240.0, "a horizontal load above 1 N")
         self.wait_for(lambda: self.latest_status().broken_bonds > 0, 120.0, "broken bonds")
         self.assertEqual(self.latest_status().last_error, "")
+
+        # The load arrow of ice/cells, worked out by hand: its head on the face at half the face's
+        # height (z = h/2, x = toe + (h/2) cot(angle)), its length along x F_cal (the readout of the
+        # same marker array, rounded to 1 N) x ~load_arrow_scale / the structure's width.
+        def arrow_drawn():
+            with self.lock:
+                markers = self.markers
+            return any(m.ns == "load" and m.action == Marker.ADD for m in markers.markers)
+        self.wait_for(arrow_drawn, 120.0, "a load arrow (F_cal above 27 N)")
+        with self.lock:
+            namespaces = {m.ns: m for m in self.markers.markers}
+        structure = QUICK["structure"]
+        height, width = float(structure["height"]), float(structure["width"])
+        tail, head = namespaces["load"].points
+        self.assertAlmostEqual(head.z, 0.5 * height, places=9)
+        self.assertAlmostEqual(head.x, TOE_X + 0.5 * height / math.tan(math.radians(float(structure["angle_deg"]))),
+                               places=9)
+        f_cal = float(re.search(r"F_cal (-?[0-9]+) N", namespaces["readout"].text).group(1))
+        self.assertGreater(f_cal, 0.0)
+        self.assertAlmostEqual(head.x - tail.x, f_cal * LOAD_ARROW_SCALE / width, delta=0.5 * LOAD_ARROW_SCALE / width)
 
 
     def test_08_paused_as_gazebo_clock_goes_on_commands_wait_and_step_publishes_every_period(self):

@@ -53,8 +53,10 @@ void addQuad(visualization_msgs::Marker& m, const geometry_msgs::Point& a, const
 }  // namespace
 
 visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const std::string& frame,
-                                                 const ros::Time& stamp, double real_time_factor) {
+                                                 const ros::Time& stamp, double real_time_factor,
+                                                 double load_arrow_scale) {
   const Params& p = sim.params();
+  const LoadSample l = sim.loads();
   const double half_h = 0.5 * p.ice.thickness;
   visualization_msgs::MarkerArray array;
 
@@ -93,7 +95,7 @@ visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const st
   const double x_low = structureFaceX(s, z_low), x_high = structureFaceX(s, z_high);
   const double y0 = -0.5 * s.width, y1 = 0.5 * s.width;
   visualization_msgs::Marker structure = baseMarker(frame, stamp, "structure", visualization_msgs::Marker::TRIANGLE_LIST);
-  structure.color = colour(0.55, 0.55, 0.6, 0.6);  // the load arrow at the toe shows through
+  structure.color = colour(0.55, 0.55, 0.6, 0.6);  // the pile behind the face shows through
   addQuad(structure, point(x_low, y0, z_low), point(x_low, y1, z_low), point(x_high, y1, z_high), point(x_high, y0, z_high));
   array.markers.push_back(structure);
   // The side panels translucent, so that they do not hide the face and the pile from the side.
@@ -104,8 +106,34 @@ visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const st
             point(x_high, y, z_high), point(s.toe_x - s.side_panel_length, y, z_high));
   }
   array.markers.push_back(panels);
+  // A readout, a legend and the load arrow, sized with the lane so that they read at full width and
+  // on a 1 m strip alike.
+  const double lane = p.channel.enabled ? p.channel.width : p.sheet.width;  // [m]
+  const double text_height = std::max(0.1, 0.03 * lane);                      // [m]
 
-  const double lane = p.channel.enabled ? p.channel.width : p.sheet.width;
+  // The load on the structure, F_cal = alpha F (Eq. 18) in all three components, as the wrench
+  // carries it: an arrow whose head presses on the face at half its height. The wrench's own frame
+  // (the toe, on the waterline) lies behind the face and under the pile, where nothing shows.
+  visualization_msgs::Marker arrow = baseMarker(frame, stamp, "load", visualization_msgs::Marker::ARROW);
+  const double alpha = p.structure.calibration_factor;
+  const double metres_per_newton = load_arrow_scale / s.width;  // [m/N]: load_arrow_scale is per N/m of width
+  const double fx = alpha * l.horizontal_raw, fy = alpha * l.lateral_raw, fz = alpha * l.vertical_raw;  // [N]
+  const double arrow_length = std::sqrt(fx * fx + fy * fy + fz * fz) * metres_per_newton;               // [m]
+  arrow.scale.x = 0.3 * text_height;  // shaft diameter [m]
+  arrow.scale.y = 0.6 * text_height;  // head diameter [m]
+  arrow.scale.z = 0.8 * text_height;  // head length [m]
+  arrow.color = colour(0.8, 0.16, 0.8);
+  if (arrow_length > arrow.scale.z) {
+    const double z_head = 0.5 * z_high;
+    const geometry_msgs::Point head = point(structureFaceX(s, z_head), 0.0, z_head);
+    arrow.points = {point(head.x - fx * metres_per_newton, head.y - fy * metres_per_newton,
+                          head.z - fz * metres_per_newton),
+                    head};
+  } else {
+    arrow.action = visualization_msgs::Marker::DELETE;  // too short to draw: the last one goes
+  }
+  array.markers.push_back(arrow);
+
   visualization_msgs::Marker pusher = baseMarker(frame, stamp, "pusher", visualization_msgs::Marker::CUBE);
   pusher.pose.position = point(sim.pusherPosition() - 0.02, 0.0, 0.0);
   pusher.scale.x = 0.04;
@@ -124,10 +152,7 @@ visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const st
     bottom.color = colour(0.45, 0.35, 0.25, 0.8);
     array.markers.push_back(bottom);
   }
-  // A readout above the structure and a legend beside it, facing the camera; text height scaled
-  // with the lane so that it reads at full width and on a 1 m strip alike.
-  const double text_height = std::max(0.1, 0.03 * lane);  // [m]
-  const LoadSample l = sim.loads();
+  // A readout above the structure and a legend beside it, facing the camera.
   char pace[32];
   if (sim.paused()) {
     std::snprintf(pace, sizeof pace, "paused");
@@ -147,8 +172,12 @@ visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const st
   legend.pose.position = point(x_high, 0.0, z_high + 1.5 * text_height);
   legend.scale.z = 0.7 * text_height;
   legend.color = colour(0.85, 0.85, 0.85);
-  legend.text = "pale: intact sheet   blue to red: broken ice, top 0 to 0.3 m above water   "
-                "orange: pusher   brown: false bottom";
+  char legend_text[256];
+  std::snprintf(legend_text, sizeof legend_text,
+                "pale: intact sheet   blue to red: broken ice, top 0 to 0.3 m above water\n"
+                "orange: pusher   brown: false bottom   magenta: F_cal, %.3g m per kN/m of width",
+                1e3 * load_arrow_scale);
+  legend.text = legend_text;
   array.markers.push_back(legend);
   return array;
 }

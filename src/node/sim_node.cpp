@@ -153,6 +153,7 @@ NodeSettings readNodeSettings(const ros::NodeHandle& pnh) {
   readParam(pnh, "publish_clock", s.publish_clock);
   readParam(pnh, "cmd_timeout", s.cmd_timeout);
   readParam(pnh, "paused_clock_rate", s.paused_clock_rate);
+  readParam(pnh, "load_arrow_scale", s.load_arrow_scale);
   readParam(pnh, "max_pusher_speed", s.max_pusher_speed);
   readParam(pnh, "max_steps_per_call", s.max_steps_per_call);
   readParam(pnh, "paused", s.start_paused);
@@ -170,6 +171,8 @@ NodeSettings readNodeSettings(const ros::NodeHandle& pnh) {
   requireRange("cmd_timeout", s.cmd_timeout, l.min_cmd_timeout, l.max_cmd_timeout, true,
                " s of simulated time (0: never)");
   requireRange("paused_clock_rate", s.paused_clock_rate, l.min_wall_rate, l.max_wall_rate, false, " Hz");
+  requireRange("load_arrow_scale", s.load_arrow_scale, l.min_load_arrow_scale, l.max_load_arrow_scale, true,
+               " m per N/m of structure width (0: no load arrow)");
   requireRange("max_pusher_speed", s.max_pusher_speed, l.min_pusher_speed, l.max_pusher_speed, false, " m/s");
   requireRange("max_steps_per_call", static_cast<double>(s.max_steps_per_call), 1.0, l.max_steps_per_call, false,
                " time steps");
@@ -477,7 +480,8 @@ void SimNode::publishStatus() {
 
 void SimNode::publishMarkers() {
   if (markers_pub_.getNumSubscribers() == 0) return;
-  markers_pub_.publish(makeSceneMarkers(*sim_, settings_.world_frame, ros::Time(sim_->time()), achieved_rtf_));
+  markers_pub_.publish(makeSceneMarkers(*sim_, settings_.world_frame, ros::Time(sim_->time()), achieved_rtf_,
+                                        settings_.load_arrow_scale));
 }
 
 void SimNode::run() {

@@ -35,6 +35,8 @@ struct NodeSettings {
                                         ///< Simulated, so that a command waits out a pause and
                                         ///< sim/step with a controller in the loop keeps it
   double paused_clock_rate = 10.0;      ///< ~paused_clock_rate [Hz wall]: /clock (frozen) while paused
+  double load_arrow_scale = 0.003;      ///< ~load_arrow_scale [m per N/m of structure width]: the
+                                        ///< length of the load arrow in ice/cells; 0 = none
   double max_pusher_speed = 0.5;        ///< ~max_pusher_speed [m/s]; the scenario's pusher.velocity too
   long max_steps_per_call = 100000;     ///< ~max_steps_per_call: sim/step refuses a longer request
   bool start_paused = false;            ///< ~paused
@@ -57,6 +59,7 @@ struct NodeLimits {
                                                             ///< check stops any cell at 50 m/s
   double max_steps_per_call = 1e8;                        ///< [-] upper bound of ~max_steps_per_call
   double min_stop_time = 0.0, max_stop_time = 1e9;        ///< [s simulated]
+  double min_load_arrow_scale = 1e-6, max_load_arrow_scale = 1.0;  ///< [m per N/m] (0 also allowed)
 };
 inline constexpr NodeLimits kNodeLimits{};
 
