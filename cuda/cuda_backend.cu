@@ -423,20 +423,20 @@ class CudaBackend final : public Backend {
     sum.panel_lateral.assign(c.panels, 0.0);
     sum.panel_vertical.assign(c.panels, 0.0);
     sum.panel_torque.assign(c.panels, Torque3{});
-    const double inv = taken > 0 ? 1.0 / static_cast<double>(taken) : 0.0;
-    sum.horizontal_raw = totals[0] * inv;
-    sum.lateral_raw = totals[1] * inv;
-    sum.vertical_raw = totals[2] * inv;
-    sum.pusher_force = totals[3] * inv;
-    sum.torque = {totals[4] * inv, totals[5] * inv, totals[6] * inv};
+    // The device's sums over the steps taken; averageSummedLoads makes them the sample's means.
+    sum.horizontal_raw = totals[0];
+    sum.lateral_raw = totals[1];
+    sum.vertical_raw = totals[2];
+    sum.pusher_force = totals[3];
+    sum.torque = {totals[4], totals[5], totals[6]};
     for (int p = 0; p < c.panels; ++p) {
       const double* q = &panels[static_cast<size_t>(kLoadPerPanel) * p];
-      sum.panel_horizontal[p] = q[0] * inv;
-      sum.panel_lateral[p] = q[1] * inv;
-      sum.panel_vertical[p] = q[2] * inv;
-      sum.panel_torque[p] = {q[3] * inv, q[4] * inv, q[5] * inv};
+      sum.panel_horizontal[p] = q[0];
+      sum.panel_lateral[p] = q[1];
+      sum.panel_vertical[p] = q[2];
+      sum.panel_torque[p] = {q[3], q[4], q[5]};
     }
-    sum.horizontal_calibrated = c.calibration_factor * sum.horizontal_raw;
+    averageSummedLoads(sum, taken, c.calibration_factor);
     sum.time = time_;
     sum.pushed_length = pusher_x_ - model_.initial_pusher_x;
     sum.broken_bonds = broken_count_;

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "thin_ice_sim/load_sample.hpp"
 #include "thin_ice_sim/model.hpp"
-#include "thin_ice_sim/simulation.hpp"
 
 namespace thin_ice {
 

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "thin_ice_sim/backend.hpp"
+#include "thin_ice_sim/simulation.hpp"
 
 namespace thin_ice {
 

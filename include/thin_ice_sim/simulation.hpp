@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "thin_ice_sim/ice_sheet.hpp"
+#include "thin_ice_sim/load_sample.hpp"
 #include "thin_ice_sim/params.hpp"
 #include "thin_ice_sim/scenario.hpp"
 
@@ -16,40 +17,6 @@ enum class BackendKind { kCpu, kCuda, kAuto };
 
 /// Parses "cpu", "cuda" or "auto"; throws std::invalid_argument naming `key` otherwise.
 BackendKind parseBackendKind(const std::string& text, const std::string& key);
-
-/// A torque [N m].
-struct Torque3 {
-  double x = 0.0, y = 0.0, z = 0.0;
-};
-
-/// Loads on the structure at one instant (the output of the model, Eqs. 17-18).
-struct LoadSample {
-  double time = 0.0;                   ///< [s] simulated time
-  double pushed_length = 0.0;          ///< [m] distance the pusher has moved
-  double horizontal_raw = 0.0;         ///< F of Eq. (17) [N], +x (ice pushing the structure)
-  double horizontal_calibrated = 0.0;  ///< F_cal = alpha F, Eq. (18) [N]
-  double vertical_raw = 0.0;           ///< [N], +z
-  double lateral_raw = 0.0;            ///< [N], +y
-  std::vector<double> panel_horizontal;  ///< (panels) raw x-load per panel [N]
-  std::vector<double> panel_vertical;    ///< (panels) raw z-load per panel [N]
-  std::vector<double> panel_lateral;     ///< (panels) raw y-load per panel [N]
-  Torque3 torque;                        ///< raw, about the structure frame's origin (the toe on
-                                         ///< the waterline at y = 0) [N m]
-  std::vector<Torque3> panel_torque;     ///< (panels) raw, about each panel's centre on the waterline
-  double pusher_force = 0.0;           ///< [N] force the pusher exerts on the ice, +x
-  int intact_bonds = 0;
-  int broken_bonds = 0;
-  int contacts = 0;                    ///< DEM contacts with positive overlap in the last step
-};
-
-/// One cell as the node and the runner see it.
-struct CellSnapshot {
-  double x, y, z, yaw;     ///< [m], [m], [m], [rad]
-  double vx, vy, vz, wz;   ///< [m/s], [rad/s]
-  bool in_intact_sheet;    ///< still bonded to at least one neighbour
-  int piece_cells;         ///< cells in the piece held together by intact bonds that this cell
-                           ///< belongs to: 1 for a free block; the pushed sheet is the largest
-};
 
 class Backend;
 struct BackendState;

@@ -87,21 +87,7 @@ class CpuBackend final : public Backend {
       stepOnce(pusher_velocity, sum);
       ++taken;
     }
-    if (taken > 0) {
-      const double inv = 1.0 / static_cast<double>(taken);
-      sum.horizontal_raw *= inv;
-      sum.vertical_raw *= inv;
-      sum.lateral_raw *= inv;
-      sum.pusher_force *= inv;
-      sum.torque.x *= inv; sum.torque.y *= inv; sum.torque.z *= inv;
-      for (int p = 0; p < c.panels; ++p) {
-        sum.panel_torque[p].x *= inv; sum.panel_torque[p].y *= inv; sum.panel_torque[p].z *= inv;
-        sum.panel_horizontal[p] *= inv;
-        sum.panel_vertical[p] *= inv;
-        sum.panel_lateral[p] *= inv;
-      }
-    }
-    sum.horizontal_calibrated = c.calibration_factor * sum.horizontal_raw;
+    averageSummedLoads(sum, taken, c.calibration_factor);
     sum.time = time_;
     sum.pushed_length = pusher_x_ - model_.initial_pusher_x;
     sum.broken_bonds = broken_count_;

@@ -115,9 +115,9 @@ visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const st
   // carries it: an arrow whose head presses on the face at half its height. The wrench's own frame
   // (the toe, on the waterline) lies behind the face and under the pile, where nothing shows.
   visualization_msgs::Marker arrow = baseMarker(frame, stamp, "load", visualization_msgs::Marker::ARROW);
-  const double alpha = p.structure.calibration_factor;
   const double metres_per_newton = load_arrow_scale / s.width;  // [m/N]: load_arrow_scale is per N/m of width
-  const double fx = alpha * l.horizontal_raw, fy = alpha * l.lateral_raw, fz = alpha * l.vertical_raw;  // [N]
+  const CalibratedWrench load = calibratedTotal(l, p.structure.calibration_factor);
+  const double fx = load.fx, fy = load.fy, fz = load.fz;  // [N]
   const double arrow_length = std::sqrt(fx * fx + fy * fy + fz * fz) * metres_per_newton;               // [m]
   arrow.scale.x = 0.3 * text_height;  // shaft diameter [m]
   arrow.scale.y = 0.6 * text_height;  // head diameter [m]
@@ -161,7 +161,7 @@ visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const st
   }
   char readout[256];
   std::snprintf(readout, sizeof readout, "t %.2f s   L %.3f m   F_cal %.0f N   %s   broken bonds %d of %d",
-                sim.time(), sim.pushedLength(), p.structure.calibration_factor * l.horizontal_raw, pace,
+                sim.time(), sim.pushedLength(), l.horizontal_calibrated, pace,
                 l.broken_bonds, l.broken_bonds + l.intact_bonds);
   visualization_msgs::Marker text = baseMarker(frame, stamp, "readout", visualization_msgs::Marker::TEXT_VIEW_FACING);
   text.pose.position = point(x_high, 0.0, z_high + 3.0 * text_height);

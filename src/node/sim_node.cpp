@@ -407,18 +407,20 @@ void SimNode::publishLoads() {
   geometry_msgs::WrenchStamped wrench;
   wrench.header.stamp = stamp;
   wrench.header.frame_id = settings_.structure_frame;
-  wrench.wrench.force = vector3(alpha * l.horizontal_raw, alpha * l.lateral_raw, alpha * l.vertical_raw);
-  wrench.wrench.torque = vector3(alpha * l.torque.x, alpha * l.torque.y, alpha * l.torque.z);
+  const CalibratedWrench total = calibratedTotal(l, alpha);
+  wrench.wrench.force = vector3(total.fx, total.fy, total.fz);
+  wrench.wrench.torque = vector3(total.torque.x, total.torque.y, total.torque.z);
   wrench_pub_.publish(wrench);
 
   thin_ice_sim::PanelLoads panels;
   panels.header = wrench.header;
   panels.calibration_factor = alpha;
   const StructureParams& s = sim_->params().structure;
-  for (size_t p = 0; p < l.panel_horizontal.size(); ++p) {
+  for (int p = 0; p < static_cast<int>(l.panel_horizontal.size()); ++p) {
+    const CalibratedWrench panel = calibratedPanel(l, p, alpha);
     geometry_msgs::Wrench w;
-    w.force = vector3(alpha * l.panel_horizontal[p], alpha * l.panel_lateral[p], alpha * l.panel_vertical[p]);
-    w.torque = vector3(alpha * l.panel_torque[p].x, alpha * l.panel_torque[p].y, alpha * l.panel_torque[p].z);
+    w.force = vector3(panel.fx, panel.fy, panel.fz);
+    w.torque = vector3(panel.torque.x, panel.torque.y, panel.torque.z);
     panels.panels.push_back(w);
     panels.panel_centre_y.push_back(-0.5 * s.width + (p + 0.5) * s.width / s.panels);
   }
