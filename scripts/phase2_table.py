@@ -6,7 +6,7 @@ strip-versus-full-width check over the span the runs have in common.
 
 Loads are per metre of structure width, so that a 2 m strip and the 10 m structure compare directly.
 A run still in progress is reported as far as it got: its length beside the experiment's, and a
-tail mean marked "not steady" where the rule in the code (include/thin_ice_sim/load_statistics.hpp)
+tail mean marked "not steady" where the rule in the code (include/thin_ice_sim/study/load_statistics.hpp)
 found no window. Nothing here is judged that the rule did not find.
 """
 import json

@@ -568,7 +568,7 @@ def main():
              f"are the calibrated horizontal load F_cal = alpha F (Eq. 18; {alpha_text(runs)}); a run on a structure",
              "narrower than the experiment's 10 m is compared per metre of width (the experiment's loads are",
              "scaled by width / 10 m). The steady state is found by the rule written in",
-             "`include/thin_ice_sim/load_statistics.hpp`; where the rule finds none, the mean of the last",
+             "`include/thin_ice_sim/study/load_statistics.hpp`; where the rule finds none, the mean of the last",
              "quarter of the record is shown and marked \"tail mean, not steady\": that is not a steady-state",
              "load. The phase-1 slope is the least-squares slope of F_cal against L from the first failure",
              "(from the end of that failure's collapse: the pile begins there) to the start of the steady window;",

@@ -1,10 +1,10 @@
-// The edge-load check (thin_ice_sim/edge_check.hpp) against closed forms worked out by hand.
+// The edge-load check (thin_ice_sim/study/edge_check.hpp) against closed forms worked out by hand.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <vector>
 
-#include "thin_ice_sim/edge_check.hpp"
+#include "thin_ice_sim/study/edge_check.hpp"
 
 namespace {
 

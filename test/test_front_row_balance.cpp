@@ -1,4 +1,4 @@
-// The front row's vertical force balance (thin_ice_sim/front_row_balance.hpp) against values
+// The front row's vertical force balance (thin_ice_sim/study/front_row_balance.hpp) against values
 // worked out by hand on a 1 m x 0.6 m sheet of unjittered 0.2 m squares: five columns of three
 // cells, the front row the three cells at 0.8 < x < 1.0 m, each bonded to the one behind it
 // across an edge L_e = 0.2 m long between centroids d = 0.2 m apart. Default ice: h = 0.051 m,
@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "thin_ice_sim/front_row_balance.hpp"
+#include "thin_ice_sim/study/front_row_balance.hpp"
 
 namespace {
 

@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include "thin_ice_sim/load_statistics.hpp"
+#include "thin_ice_sim/study/load_statistics.hpp"
 
 namespace thin_ice {
 namespace {

@@ -1,4 +1,4 @@
-// Rubble pile profiles (thin_ice_sim/rubble_profiles.hpp) of a few hand-placed cells, values worked
+// Rubble pile profiles (thin_ice_sim/study/rubble_profiles.hpp) of a few hand-placed cells, values worked
 // out by hand. Structure: toe at x = 10 m, 60 degrees, 1 m high, 2 m wide; ice h = 0.051 m,
 // rho_i = 920, rho_w = 1000 kg/m^3, so a floating cell's centroid is at
 // z_float = h/2 - 0.92 h = -0.02142 m and a cell is pile above z_float + h/2 = 0.00408 m.
@@ -8,7 +8,7 @@
 #include <cmath>
 #include <vector>
 
-#include "thin_ice_sim/rubble_profiles.hpp"
+#include "thin_ice_sim/study/rubble_profiles.hpp"
 
 namespace {
 

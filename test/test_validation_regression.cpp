@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "thin_ice_sim/built_backends.hpp"
-#include "thin_ice_sim/load_statistics.hpp"
+#include "thin_ice_sim/study/load_statistics.hpp"
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/simulation.hpp"
 

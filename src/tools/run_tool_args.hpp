@@ -1,7 +1,7 @@
 // The command line shared by the tools that analyse one finished thin_ice_run directory
 // (thin_ice_edge_balance, thin_ice_profiles):
 //   TOOL RUN_DIR [--accept-changed-scenario] [--NAME VALUE]...
-// and loading that run's scenario with loadRunScenario (thin_ice_sim/run_directory.hpp).
+// and loading that run's scenario with loadRunScenario (thin_ice_sim/study/run_directory.hpp).
 #pragma once
 
 #include <cstdio>
@@ -9,7 +9,7 @@
 #include <set>
 #include <string>
 
-#include "thin_ice_sim/run_directory.hpp"
+#include "thin_ice_sim/study/run_directory.hpp"
 
 namespace thin_ice_tools {
 

@@ -14,9 +14,9 @@
 #include <stdexcept>
 #include <string>
 
-#include "thin_ice_sim/load_statistics.hpp"
-#include "thin_ice_sim/run_directory.hpp"
-#include "thin_ice_sim/run_report.hpp"
+#include "thin_ice_sim/study/load_statistics.hpp"
+#include "thin_ice_sim/study/run_directory.hpp"
+#include "thin_ice_sim/study/run_report.hpp"
 
 int main(int argc, char** argv) {
   const std::string usage = "usage: thin_ice_analyse RUN_DIR\n";

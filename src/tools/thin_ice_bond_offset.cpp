@@ -12,7 +12,7 @@
 //     surface, sigma_f / (E h / (2 (1 - nu^2)));
 //   - the height at which a cell's centroid floats at rest.
 // scripts/sheet_bending reads it, so that the thresholds it sets the sheet's shape against are
-// the engine's own laws (thin_ice_sim/edge_check.hpp, physics/bond.hpp, water.hpp). The model is built without the time-step check: a stiffer ice asked about here need
+// the engine's own laws (thin_ice_sim/study/edge_check.hpp, physics/bond.hpp, water.hpp). The model is built without the time-step check: a stiffer ice asked about here need
 // not be one a run could step.
 //   thin_ice_bond_offset --scenario FILE [--set section.key=value]... [--slope S]...
 // Exit status: 0 done; 2 bad arguments or scenario.
@@ -25,7 +25,7 @@
 #include <string>
 #include <vector>
 
-#include "thin_ice_sim/edge_check.hpp"
+#include "thin_ice_sim/study/edge_check.hpp"
 #include "thin_ice_sim/physics/water.hpp"
 #include "thin_ice_sim/scenario.hpp"
 

@@ -1,9 +1,9 @@
 // thin_ice_edge_balance: the vertical force balance of the sheet's front row in a run, snapshot by
-// snapshot (thin_ice_sim/front_row_balance.hpp), as a Markdown table beside the structure's
+// snapshot (thin_ice_sim/study/front_row_balance.hpp), as a Markdown table beside the structure's
 // vertical load on the ice from loads.csv (the mean over that output interval).
 //   thin_ice_edge_balance RUN_DIR [--accept-changed-scenario]
 // RUN_DIR is a thin_ice_run output with --snapshots; its scenario is the one summary.json names
-// (thin_ice_sim/run_directory.hpp: run from the directory the run was started in).
+// (thin_ice_sim/study/run_directory.hpp: run from the directory the run was started in).
 // Exit status: 0 done; 2 bad arguments, run directory or scenario.
 #include <cmath>
 #include <cstdio>
@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "thin_ice_sim/front_row_balance.hpp"
-#include "thin_ice_sim/run_directory.hpp"
+#include "thin_ice_sim/study/front_row_balance.hpp"
+#include "thin_ice_sim/study/run_directory.hpp"
 #include "run_tool_args.hpp"
 
 namespace {

@@ -1,6 +1,6 @@
 // thin_ice_edge_check: the edge-load check (a free edge against a floating plate's P_crit) for one or more scenarios. Prints, as a
 // Markdown table, the vertical line load at which straight cuts near the sheet's front edge fail
-// (the bond law swept quasi-statically over a rigid strip, thin_ice_sim/edge_check.hpp) beside
+// (the bond law swept quasi-statically over a rigid strip, thin_ice_sim/study/edge_check.hpp) beside
 // the floating plate's P_crit and characteristic length l, and the sum of the bonds' own peaks.
 //   thin_ice_edge_check --scenario FILE [--scenario FILE]... [--set section.key=value]... [--cuts N]
 // Exit status: 0 done; 2 bad arguments or scenario.
@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "thin_ice_sim/edge_check.hpp"
+#include "thin_ice_sim/study/edge_check.hpp"
 #include "thin_ice_sim/scenario.hpp"
 
 int main(int argc, char** argv) {

@@ -1,4 +1,4 @@
-// thin_ice_profiles: the rubble pile's side and top profiles (thin_ice_sim/rubble_profiles.hpp)
+// thin_ice_profiles: the rubble pile's side and top profiles (thin_ice_sim/study/rubble_profiles.hpp)
 // of a finished run, from one of its snapshots, written as RUN_DIR/profiles.csv (the file
 // thin_ice_run --profiles writes at the end of a run).
 //   thin_ice_profiles RUN_DIR [--snapshot cells_RRRRRR.csv] [--out FILE] [--accept-changed-scenario]
@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "thin_ice_sim/rubble_profiles.hpp"
-#include "thin_ice_sim/run_directory.hpp"
+#include "thin_ice_sim/study/rubble_profiles.hpp"
+#include "thin_ice_sim/study/run_directory.hpp"
 #include "thin_ice_sim/sheet_io.hpp"
 #include "run_tool_args.hpp"
 

@@ -1,4 +1,4 @@
-#include "thin_ice_sim/front_row_balance.hpp"
+#include "thin_ice_sim/study/front_row_balance.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "thin_ice_sim/rubble_profiles.hpp"
+#include "thin_ice_sim/study/rubble_profiles.hpp"
 
 #include <algorithm>
 #include <cmath>

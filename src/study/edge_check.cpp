@@ -1,4 +1,4 @@
-#include "thin_ice_sim/edge_check.hpp"
+#include "thin_ice_sim/study/edge_check.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Peak, phase-1 slope and steady state of a load history; the rule is in load_statistics.hpp.
-#include "thin_ice_sim/load_statistics.hpp"
+#include "thin_ice_sim/study/load_statistics.hpp"
 
 #include <algorithm>
 #include <cmath>

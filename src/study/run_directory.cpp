@@ -1,4 +1,4 @@
-#include "thin_ice_sim/run_directory.hpp"
+#include "thin_ice_sim/study/run_directory.hpp"
 
 #include <yaml-cpp/yaml.h>
 

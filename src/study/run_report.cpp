@@ -1,4 +1,4 @@
-#include "thin_ice_sim/run_report.hpp"
+#include "thin_ice_sim/study/run_report.hpp"
 
 #include <cctype>
 #include <cmath>

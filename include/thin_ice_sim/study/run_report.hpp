@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "thin_ice_sim/load_statistics.hpp"
+#include "thin_ice_sim/study/load_statistics.hpp"
 
 namespace thin_ice {
 
