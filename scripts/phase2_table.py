@@ -13,12 +13,12 @@ import json
 import os
 import re
 
+from experiments import PHASE1_SLOPE, PUSHED_LENGTH, per_metre
 from strip_loads import read_run, within_seed_spread
 
 SERIES = ["W-1", "W-2", "W-3", "M-1", "M-2", "S-1", "S-2"]
-# Table 5: pushed length of each experiment [m].
-EXPERIMENT_LENGTH = {"W-1": 23.2, "W-2": 19.7, "W-3": 21.6, "M-1": 25.3, "M-2": 25.9, "S-1": 25.7, "S-2": 24.6}
-PHASE1_SLOPE_PER_METRE = 150.0  # [N/m per m of pushed ice]: Table 6's 1500 N/m on the 10 m structure
+EXPERIMENT_LENGTH = PUSHED_LENGTH  # [m] Table 5, per series (config/experiments.yaml)
+PHASE1_SLOPE_PER_METRE = per_metre(PHASE1_SLOPE)  # [N/m per m of pushed ice]: Table 6's slope per metre of width
 TARGETS = {"steady": 10.0, "peak": 25.0, "slope": 25.0}  # [%] issue #31's targets
 ALPHA = 0.63  # [-] Eq. (18), the paper's one factor; runs recorded with another alpha are rescaled
 # Runs at the scenarios' reading on a 14 m strip (config/strips/readings-14m.matrix: E_v set to the

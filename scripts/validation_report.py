@@ -24,13 +24,12 @@ import sys
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from png_output import save_png  # noqa: E402
 from phase2_table import phase2_table  # noqa: E402
+from experiments import ICE_TYPE, PAPER_TIM, PHASE1_SLOPE, PUSHED_LENGTH, STEADY_MEAN  # noqa: E402
 
 SERIES = ["W-1", "W-2", "W-3", "M-1", "M-2", "S-1", "S-2"]
-# Table 5: pushed length of each experiment [m].
-EXPERIMENT_LENGTH = {"W-1": 23.2, "W-2": 19.7, "W-3": 21.6, "M-1": 25.3, "M-2": 25.9, "S-1": 25.7, "S-2": 24.6}
-# Table 6 (paper, TIM column) for the three runs the paper made, one per ice type [N].
-PAPER_TIM = {"W": (11984, 8505), "M": (16780, 7840), "S": (20204, 16191)}
-TARGETS = "steady-state mean within +-10 %, peak within +-25 %, phase-1 slope within +-25 % of 1500 N/m"
+EXPERIMENT_LENGTH = PUSHED_LENGTH  # [m] Table 5, per series (config/experiments.yaml)
+TARGETS = ("steady-state mean within +-10 %, peak within +-25 %, phase-1 slope within +-25 % of "
+           f"{PHASE1_SLOPE:.0f} N/m")
 
 
 def fail(message):
@@ -122,9 +121,7 @@ def compare_plot(root, sid, names, histories):
     return out
 
 
-# Table 6 / Figs. 10-12: the experiments' steady-state mean per ice type [N] (10 m structure).
-EXPERIMENT_MEAN = {"W": 8600.0, "M": 7820.0, "S": 13750.0}
-ICE_TYPE = {"W": "weak", "M": "medium", "S": "strong"}
+EXPERIMENT_MEAN = STEADY_MEAN  # [N] Table 6 / Figs. 10-12, per ice type, 10 m structure
 WINDOW_M = 0.5  # width of the windows in which the long runs' loads are averaged [m]
 READING = "edge_face"  # the contact friction of the engine (once ice.vertical_slip_friction, removed by issue #31)
 ARCHIVE = "level_only"  # docs/validation/level_only/: the runs of the reading every run had until 2026-12-02
@@ -330,7 +327,7 @@ def num(value, fmt="{:.0f}"):
 def row(name, s):
     load, exp = s.get("load") or {}, s.get("experiment") or {}
     scale = exp.get("width_scale", 1.0) or 1.0
-    slope_ref = 1500.0 * scale
+    slope_ref = PHASE1_SLOPE * scale
     reached = s.get("pushed_length_m")
     series = re.match(r"[WMS]-\d", name)
     full = EXPERIMENT_LENGTH.get(series.group(0)) if series else None
@@ -400,7 +397,7 @@ def targets_at_a_glance(runs):
         load, exp = s["load"], s.get("experiment") or {}
         scale = exp.get("width_scale", 1.0) or 1.0
         mean, peak, slope = load.get("steady_mean_N"), load.get("peak_N"), load.get("phase1_slope_N_per_m")
-        exp_mean, exp_peak, exp_slope = exp.get("steady_mean_N"), exp.get("peak_N"), 1500.0 * scale
+        exp_mean, exp_peak, exp_slope = exp.get("steady_mean_N"), exp.get("peak_N"), PHASE1_SLOPE * scale
         if load.get("steady_found"):
             steady_means[kind] = mean / scale
             mean_cells = (f"{num(mean)} ({num(exp_mean)})", pct(mean, exp_mean), verdict(mean, exp_mean, TOLERANCE["steady"]))

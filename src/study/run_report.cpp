@@ -1,27 +1,52 @@
 #include "thin_ice_sim/study/run_report.hpp"
 
+#include <yaml-cpp/yaml.h>
+
 #include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
+#include <vector>
+
+#include "thin_ice_experiments_yaml.hpp"
 
 namespace thin_ice {
+namespace {
+
+/// config/experiments.yaml as built in: the experiments' structure width and one Experiment per
+/// ice type. Read once; a file the build embedded cannot be missing, and a malformed one fails the
+/// tests that compare with it.
+struct ExperimentTable {
+  double structure_width;  ///< [m]
+  std::vector<Experiment> ice_types;
+};
+
+const ExperimentTable& experimentTable() {
+  static const ExperimentTable table = [] {
+    const YAML::Node root = YAML::Load(kExperimentsYaml);
+    ExperimentTable t{root["structure_width"].as<double>(), {}};
+    for (const auto& entry : root["ice_types"]) {
+      const YAML::Node& e = entry.second;
+      t.ice_types.push_back({entry.first.as<std::string>(), e["steady_mean"].as<double>(), e["peak"].as<double>(),
+                             e["source"].as<std::string>()});
+    }
+    return t;
+  }();
+  return table;
+}
+
+}  // namespace
 
 const Experiment* experimentFor(const std::string& scenario_name) {
-  static const Experiment kTable6[] = {
-      {"W", 8600.0, 15790.0, "Table 6 / Fig. 10: W-3 steady state and peak"},
-      {"M", 7820.0, 12700.0, "Table 6 / Fig. 11: M-2 steady state and peak"},
-      {"S", 13750.0, 20560.0, "Table 6 / Fig. 12: S-2 steady state, S-1 peak"}};
   if (scenario_name.size() < 2 || scenario_name[1] != '-') return nullptr;
-  for (const Experiment& e : kTable6) {
+  for (const Experiment& e : experimentTable().ice_types) {
     if (std::toupper(static_cast<unsigned char>(scenario_name[0])) == e.series[0]) return &e;
   }
   return nullptr;
 }
 
 double experimentWidthScale(double structure_width) {
-  constexpr double kExperimentWidth = 10.0;  // [m] Table 4
-  return structure_width / kExperimentWidth;
+  return structure_width / experimentTable().structure_width;
 }
 
 std::string jsonString(const std::string& text) {

@@ -332,7 +332,7 @@ void printReport(const Simulation& sim, const Options& o, const thin_ice::LoadSt
       thin_ice::compareWithExperiment(sim.scenario().name, sim.params().structure.width, s);
   if (c.experiment) {
     std::printf("  experiment (%s, x %.3g for a %.3g m structure): mean %.0f N (%+.1f%%), peak %.0f N (%+.1f%%)\n",
-                c.experiment->source, c.width_scale, sim.params().structure.width, c.mean, c.mean_error_percent,
+                c.experiment->source.c_str(), c.width_scale, sim.params().structure.width, c.mean, c.mean_error_percent,
                 c.peak, c.peak_error_percent);
   }
   std::printf("wrote %s/loads.csv and %s/summary.json\n", o.out.c_str(), o.out.c_str());

@@ -9,18 +9,19 @@
 
 namespace thin_ice {
 
-/// A Table 6 experiment (Lemstrom et al.): series letter, steady-state mean F_avg [N] and peak
-/// F_p [N] on the experiment's 10 m wide structure, and where the numbers come from.
+/// A Table 6 experiment (Lemstrom et al.): ice type letter, steady-state mean F_avg [N] and peak
+/// F_p [N] on the experiments' structure, and where the numbers come from. The figures are those
+/// of config/experiments.yaml, embedded when the library is built.
 struct Experiment {
-  const char* series;
+  std::string series;
   double mean, peak;
-  const char* source;
+  std::string source;
 };
 
 /// The experiment a scenario named "W-3", "M-1", ... is compared with; nullptr for other names.
 const Experiment* experimentFor(const std::string& scenario_name);
 
-/// Table 6 loads are for the 10 m wide structure of Table 4: a narrower slice of the same set-up
+/// Table 6 loads are for the structure of Table 4 (10 m wide): a narrower slice of the same set-up
 /// is compared with them scaled by its width (load per metre of structure) [-].
 double experimentWidthScale(double structure_width);
 
