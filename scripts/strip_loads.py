@@ -1,29 +1,22 @@
 """A run's load record per metre of structure width, for the strip tools (scripts/strip_table,
 scripts/strip_vs_full): one reader and one set of window means."""
-import csv
-import json
 import math
 import os
+import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import run_record  # noqa: E402
 
 
 def read_run(path):
     """(summary or None, lengths [m], raw horizontal loads [N], last row). A run killed before it
     wrote its summary still has its rows in loads.csv.partial (written row by row): those are read,
     and the summary is None."""
-    summary = None
-    if os.path.exists(os.path.join(path, "summary.json")):
-        with open(os.path.join(path, "summary.json")) as f:
-            summary = json.load(f)
-    loads = os.path.join(path, "loads.csv")
-    if not os.path.exists(loads) and os.path.exists(loads + ".partial"):
-        loads += ".partial"
-    lengths, raw, last = [], [], None
-    with open(loads) as f:
-        for row in csv.DictReader(f):
-            lengths.append(float(row["pushed_length_m"]))
-            raw.append(float(row["horizontal_raw_N"]))
-            last = row
-    return summary, lengths, raw, last
+    summary = run_record.read_summary(path)
+    rows = run_record.read_load_rows(path)
+    lengths = [float(row["pushed_length_m"]) for row in rows]
+    raw = [float(row["horizontal_raw_N"]) for row in rows]
+    return summary, lengths, raw, rows[-1] if rows else None
 
 
 def window_means(lengths, values, window, windows=None):

@@ -1,5 +1,7 @@
 #include "thin_ice_sim/study/run_directory.hpp"
 
+#include "thin_ice_sim/study/run_record.hpp"
+
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
@@ -22,7 +24,7 @@ std::vector<std::string> splitCsvLine(const std::string& line) {
 
 /// RUN/summary.json as a YAML node (JSON is YAML); throws std::runtime_error naming the file.
 YAML::Node loadSummary(const std::string& run_dir) {
-  const std::string path = run_dir + "/summary.json";
+  const std::string path = run_dir + "/" + run_record::kSummaryFile;
   if (!std::ifstream(path)) throw std::runtime_error("no " + path + ": not a thin_ice_run output directory");
   try {
     return YAML::LoadFile(path);
@@ -95,7 +97,7 @@ Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, s
 }
 
 RunSummary readRunSummary(const std::string& run_dir) {
-  const std::string path = run_dir + "/summary.json";
+  const std::string path = run_dir + "/" + run_record::kSummaryFile;
   const YAML::Node summary = loadSummary(run_dir);
   auto field = [&](const char* key, const char* allowed) {
     const YAML::Node node = summary[key];
@@ -135,33 +137,30 @@ RunSummary readRunSummary(const std::string& run_dir) {
 }
 
 LoadHistory readLoadHistory(const std::string& csv_path) {
+  namespace column = run_record::load_column;
   LoadHistory h;
   for (const CsvRow& row : readCsv(csv_path)) {
-    h.time.push_back(csvNumber(row, "time_s", csv_path));
-    h.pushed_length.push_back(csvNumber(row, "pushed_length_m", csv_path));
-    h.load.push_back(csvNumber(row, "horizontal_calibrated_N", csv_path));
-    h.intact_bonds.push_back(static_cast<int>(csvNumber(row, "intact_bonds", csv_path)));
-    h.broken_bonds.push_back(static_cast<int>(csvNumber(row, "broken_bonds", csv_path)));
+    h.time.push_back(csvNumber(row, column::kTime, csv_path));
+    h.pushed_length.push_back(csvNumber(row, column::kPushedLength, csv_path));
+    h.load.push_back(csvNumber(row, column::kHorizontalCalibrated, csv_path));
+    h.intact_bonds.push_back(static_cast<int>(csvNumber(row, column::kIntactBonds, csv_path)));
+    h.broken_bonds.push_back(static_cast<int>(csvNumber(row, column::kBrokenBonds, csv_path)));
   }
   return h;
 }
 
 std::vector<SnapshotEntry> readSnapshotIndex(const std::string& run_dir) {
-  const std::string index_path = run_dir + "/snapshots/index.csv";
+  const std::string index_path =
+      run_dir + "/" + run_record::kSnapshotDir + "/" + run_record::kSnapshotIndexFile;
   if (!std::ifstream(index_path)) throw std::runtime_error("no snapshots/index.csv: the run needs --snapshots N");
   std::vector<SnapshotEntry> entries;
   for (const CsvRow& row : readCsv(index_path)) {
     SnapshotEntry e;
     const std::string name = row.count("file") ? row.at("file") : "";
-    // cells_RRRRRR.csv, RRRRRR: the loads.csv row, six digits (thin_ice_run's writeSnapshot)
-    const bool digits = name.size() == 16 && std::all_of(name.begin() + 6, name.begin() + 12, [](char c) {
-      return c >= '0' && c <= '9';
-    });
-    if (!digits || name.compare(0, 6, "cells_") != 0 || name.compare(12, 4, ".csv") != 0) {
+    if (!run_record::parseSnapshotFileName(name, e.loads_row)) {
       throw std::runtime_error(index_path + ": file '" + name + "' is not a cells_RRRRRR.csv name (six digits)");
     }
-    e.file = run_dir + "/snapshots/" + name;
-    e.loads_row = std::stol(name.substr(6, 6));
+    e.file = run_dir + "/" + run_record::kSnapshotDir + "/" + name;
     e.time = csvNumber(row, "time_s", index_path);
     e.pushed_length = csvNumber(row, "pushed_length_m", index_path);
     entries.push_back(e);

@@ -58,6 +58,7 @@
 #include "thin_ice_sim/study/load_statistics.hpp"
 #include "thin_ice_sim/study/rubble_profiles.hpp"
 #include "thin_ice_sim/study/run_directory.hpp"
+#include "thin_ice_sim/study/run_record.hpp"
 #include "thin_ice_sim/study/run_report.hpp"
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/sheet_io.hpp"
@@ -74,26 +75,8 @@ using thin_ice_tools::kUsage;
 using thin_ice_tools::Options;
 using thin_ice_tools::UsageError;
 
-std::string loadsHeader(std::size_t panels) {
-  std::string header =
-      "time_s,pushed_length_m,horizontal_raw_N,horizontal_calibrated_N,vertical_raw_N,"
-      "pusher_force_N,intact_bonds,broken_bonds,contacts";
-  for (std::size_t p = 1; p <= panels; ++p) header += ",panel_" + std::to_string(p) + "_N";
-  return header + "\n";
-}
-
-std::string loadsRow(const LoadSample& s, std::size_t panels) {
-  char text[256];
-  std::snprintf(text, sizeof(text), "%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%d,%d", s.time,
-                s.pushed_length, s.horizontal_raw, s.horizontal_calibrated, s.vertical_raw,
-                s.pusher_force, s.intact_bonds, s.broken_bonds, s.contacts);
-  std::string row = text;
-  for (std::size_t p = 0; p < panels; ++p) {  // the header's count, whatever the sample holds
-    std::snprintf(text, sizeof(text), ",%.9g", p < s.panel_horizontal.size() ? s.panel_horizontal[p] : 0.0);
-    row += text;
-  }
-  return row + "\n";
-}
+using thin_ice::run_record::loadsHeader;
+using thin_ice::run_record::loadsRow;
 
 /// One CSV per snapshot: cell pose, whether it is bonded, the size of its bonded piece (cells) and
 /// its world polygon as "x0 y0 x1 y1 ..." [m] in one field.
@@ -102,7 +85,7 @@ std::string writeSnapshot(const Simulation& sim, const std::string& dir, long ro
   const std::vector<thin_ice::CellSnapshot> cells = sim.cells();
   std::ostringstream text;
   text.precision(9);
-  text << "cell,x_m,y_m,z_m,yaw_rad,in_intact_sheet,piece_cells,polygon_xy_m\n";
+  text << thin_ice::run_record::headerLine(thin_ice::run_record::kSnapshotColumns);
   for (std::size_t k = 0; k < cells.size(); ++k) {
     const thin_ice::CellSnapshot& c = cells[k];
     text << k << ',' << c.x << ',' << c.y << ',' << c.z << ',' << c.yaw << ','
@@ -111,10 +94,9 @@ std::string writeSnapshot(const Simulation& sim, const std::string& dir, long ro
     for (std::size_t v = 0; v < polygon.size(); ++v) text << (v ? " " : "") << polygon[v].x << ' ' << polygon[v].y;
     text << '\n';
   }
-  char name[32];
-  std::snprintf(name, sizeof(name), "cells_%06ld.csv", row);
+  const std::string name = thin_ice::run_record::snapshotFileName(row);
   thin_ice::writeFileAtomically(dir + "/" + name, text.str());
-  std::ofstream index(dir + "/index.csv", std::ios::app);  // file, time, pushed length
+  std::ofstream index(dir + "/" + thin_ice::run_record::kSnapshotIndexFile, std::ios::app);  // file, time, length
   index << name << ',' << sim.time() << ',' << sim.pushedLength() << '\n';
   return name;
 }
@@ -167,9 +149,9 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
   std::ofstream csv(csv_path + ".partial", std::ios::trunc);
   if (!csv) throw std::runtime_error("cannot write '" + csv_path + ".partial'");
   const std::string snapshot_dir = o.out + "/snapshots";
-  const std::string snapshot_index = snapshot_dir + "/index.csv";
+  const std::string snapshot_index = snapshot_dir + "/" + thin_ice::run_record::kSnapshotIndexFile;
   if (o.snapshots > 0 && !(cont.active && std::filesystem::exists(snapshot_index))) {
-    std::ofstream(snapshot_index) << "file,time_s,pushed_length_m\n";
+    std::ofstream(snapshot_index) << thin_ice::run_record::headerLine(thin_ice::run_record::kSnapshotIndexColumns);
   }
   // Snapshot k (0-based) is due at progress k / (N - 1): the first shows the sheet at rest, the
   // last the end (N = 1: the end only). Several due in one row give one file. A resumed run's
@@ -187,7 +169,7 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
 
   // Row r (1-based) holds the loads averaged over output interval r (Simulation::loads()),
   // stamped with the time at its end; there is no row at t = 0 (nothing averaged yet).
-  const std::size_t panels = static_cast<std::size_t>(std::max(0, sim.params().structure.panels));
+  const int panels = std::max(0, sim.params().structure.panels);
   if (cont.active) {
     csv << cont.previous_csv;
   } else {
@@ -273,7 +255,8 @@ std::string summaryJson(const Simulation& sim, const Options& o, const RunResult
   std::ostringstream j;
   auto num = [](double v) { return jsonNumber(v); };
   const char* status = !r.error.empty() ? "unhealthy" : r.interrupted_by != 0 ? "interrupted" : "completed";
-  j << "{\n  \"status\": " << jsonString(status)
+  j << "{\n  \"schema_version\": " << thin_ice::run_record::kSummarySchemaVersion
+    << ",\n  \"status\": " << jsonString(status)
     << ",\n  \"error\": " << (r.error.empty() ? "null" : jsonString(r.error))
     << ",\n  \"scenario\": {\"name\": " << jsonString(sc.name) << ", \"file\": "
     << jsonString(sc.source) << ", \"hash\": " << jsonString(sc.hash) << ", \"overrides\": [";
@@ -438,7 +421,7 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
     std::ifstream csv(csv_path);
     if (!csv) throw ResumeError("no " + csv_path);
     cont.previous_csv.assign(std::istreambuf_iterator<char>(csv), std::istreambuf_iterator<char>());
-    const std::size_t panels = static_cast<std::size_t>(std::max(0, sim->params().structure.panels));
+    const int panels = std::max(0, sim->params().structure.panels);
     const std::string header = loadsHeader(panels);
     if (cont.previous_csv.compare(0, header.size(), header) != 0) {
       throw ResumeError(csv_path + ": its first line is not thin_ice_run's header for " + std::to_string(panels) +

@@ -1,0 +1,72 @@
+// The run record, owned here: what a run directory holds and how each file is laid out.
+// thin_ice_run writes it through these names and functions, run_directory.cpp reads it back through
+// the same names, and the scripts read it through their mirror, scripts/run_record.py
+// (test/test_run_record.py holds the mirror to this file).
+#pragma once
+
+#include <cstddef>
+#include <string>
+
+#include "thin_ice_sim/load_sample.hpp"
+
+namespace thin_ice::run_record {
+
+/// summary.json's "schema_version": raised when a field changes its meaning or leaves (a field
+/// added is not a new version). Records written before the field existed have this layout too.
+inline constexpr int kSummarySchemaVersion = 1;
+
+inline constexpr const char* kSummaryFile = "summary.json";
+inline constexpr const char* kLoadsFile = "loads.csv";          ///< written through loads.csv.partial
+inline constexpr const char* kCheckpointFile = "checkpoint.bin";
+inline constexpr const char* kSnapshotDir = "snapshots";
+inline constexpr const char* kSnapshotIndexFile = "index.csv";  ///< in kSnapshotDir
+
+/// loads.csv: one row per output interval, the loads averaged over it, stamped at its end.
+namespace load_column {
+inline constexpr const char* kTime = "time_s";                                ///< [s] simulated
+inline constexpr const char* kPushedLength = "pushed_length_m";               ///< [m]
+inline constexpr const char* kHorizontalRaw = "horizontal_raw_N";             ///< F of Eq. (17) [N]
+inline constexpr const char* kHorizontalCalibrated = "horizontal_calibrated_N";  ///< alpha F, Eq. (18) [N]
+inline constexpr const char* kVerticalRaw = "vertical_raw_N";                 ///< [N], +z
+inline constexpr const char* kPusherForce = "pusher_force_N";                 ///< [N], +x
+inline constexpr const char* kIntactBonds = "intact_bonds";
+inline constexpr const char* kBrokenBonds = "broken_bonds";
+inline constexpr const char* kContacts = "contacts";
+}  // namespace load_column
+
+/// loads.csv's columns before the panels', in order; then panel_1_N ... panel_P_N (each panel's raw
+/// horizontal load [N], panelColumn).
+inline constexpr const char* kLoadColumns[] = {
+    load_column::kTime,        load_column::kPushedLength, load_column::kHorizontalRaw,
+    load_column::kHorizontalCalibrated, load_column::kVerticalRaw, load_column::kPusherForce,
+    load_column::kIntactBonds, load_column::kBrokenBonds,  load_column::kContacts};
+
+/// snapshots/cells_RRRRRR.csv: one row per cell; the polygon as "x0 y0 x1 y1 ..." [m] in one field.
+inline constexpr const char* kSnapshotColumns[] = {"cell", "x_m", "y_m", "z_m", "yaw_rad",
+                                                   "in_intact_sheet", "piece_cells", "polygon_xy_m"};
+/// snapshots/index.csv: one row per snapshot file.
+inline constexpr const char* kSnapshotIndexColumns[] = {"file", "time_s", "pushed_length_m"};
+
+/// "panel_K_N" for panel K (1-based).
+std::string panelColumn(int panel);
+
+/// The comma-separated header line of `columns` (with its newline).
+template <std::size_t N>
+std::string headerLine(const char* const (&columns)[N]) {
+  std::string line;
+  for (std::size_t k = 0; k < N; ++k) line += std::string(k ? "," : "") + columns[k];
+  return line + "\n";
+}
+
+/// loads.csv's header for a structure of `panels` panels, and one row of it (nine significant
+/// digits; a sample with fewer panel loads than the header writes 0 for the rest).
+std::string loadsHeader(int panels);
+std::string loadsRow(const LoadSample& s, int panels);
+
+/// The snapshot file of loads.csv's data row `loads_row` (1-based; 0: the sheet at rest):
+/// "cells_RRRRRR.csv", six digits. parseSnapshotFileName gives the row back, or false for a
+/// name of another form.
+std::string snapshotFileName(long loads_row);
+bool parseSnapshotFileName(const std::string& name, long& loads_row);
+
+}  // namespace thin_ice::run_record

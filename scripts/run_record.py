@@ -1,0 +1,53 @@
+"""The run record as the scripts read it: the mirror of include/thin_ice_sim/study/run_record.hpp,
+which owns the layout (thin_ice_run writes through it). test/test_run_record.py holds the two to
+each other, so a column renamed there and not here fails the tests."""
+import csv
+import json
+import os
+
+SUMMARY_SCHEMA_VERSION = 1  # summary.json's "schema_version"; records before the field: the same layout
+
+SUMMARY_FILE = "summary.json"
+LOADS_FILE = "loads.csv"  # written through loads.csv.partial, renamed when the run ends
+CHECKPOINT_FILE = "checkpoint.bin"
+SNAPSHOT_DIR = "snapshots"
+SNAPSHOT_INDEX_FILE = "index.csv"
+
+# loads.csv: one row per output interval; these columns, then panel_1_N ... panel_P_N.
+LOAD_COLUMNS = ("time_s", "pushed_length_m", "horizontal_raw_N", "horizontal_calibrated_N", "vertical_raw_N",
+                "pusher_force_N", "intact_bonds", "broken_bonds", "contacts")
+SNAPSHOT_COLUMNS = ("cell", "x_m", "y_m", "z_m", "yaw_rad", "in_intact_sheet", "piece_cells", "polygon_xy_m")
+SNAPSHOT_INDEX_COLUMNS = ("file", "time_s", "pushed_length_m")
+
+
+def panel_column(panel):
+    """loads.csv's column of panel `panel` (1-based): its raw horizontal load [N]."""
+    return f"panel_{panel}_N"
+
+
+def loads_path(run_dir):
+    """loads.csv of a run, or loads.csv.partial where a run was killed before it finished (its rows
+    are written one by one); None when there is neither."""
+    path = os.path.join(run_dir, LOADS_FILE)
+    if os.path.exists(path):
+        return path
+    return path + ".partial" if os.path.exists(path + ".partial") else None
+
+
+def read_summary(run_dir):
+    """summary.json as a dict, or None where the run has none yet."""
+    path = os.path.join(run_dir, SUMMARY_FILE)
+    if not os.path.exists(path):
+        return None
+    with open(path) as f:
+        return json.load(f)
+
+
+def read_load_rows(run_dir):
+    """loads.csv's rows as dicts of strings keyed by column (the partial file where there is no
+    other); raises FileNotFoundError naming the run where there is neither."""
+    path = loads_path(run_dir)
+    if path is None:
+        raise FileNotFoundError(f"{run_dir}: no {LOADS_FILE} (nor {LOADS_FILE}.partial)")
+    with open(path) as f:
+        return list(csv.DictReader(f))

@@ -1,0 +1,86 @@
+#!/usr/bin/python3
+"""The scripts' mirror of the run record (scripts/run_record.py) against its owner
+(include/thin_ice_sim/study/run_record.hpp) and against a record thin_ice_run writes: the same file
+names, columns and schema version, so that a column renamed on one side and not the other fails
+here rather than in a plot.
+
+    test_run_record.py THIN_ICE_RUN SOURCE_DIR
+"""
+import csv
+import json
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+
+def cpp_names(header_text):
+    """The names run_record.hpp gives: its string constants and its three column arrays."""
+    constants = dict(re.findall(r'inline constexpr const char\* (k\w+) = "([^"]*)";', header_text))
+    version = int(re.search(r"kSummarySchemaVersion = (\d+);", header_text).group(1))
+
+    def array(name):
+        body = re.search(r"inline constexpr const char\* " + name + r"\[\] = \{(.*?)\};", header_text, re.S).group(1)
+        items = []
+        for item in (x.strip() for x in body.split(",")):
+            if item.startswith('"'):
+                items.append(item.strip('"'))
+            elif item:
+                items.append(constants[item.split("::")[-1]])
+        return tuple(items)
+
+    return constants, version, array("kLoadColumns"), array("kSnapshotColumns"), array("kSnapshotIndexColumns")
+
+
+def main():
+    run_tool, source = sys.argv[1], sys.argv[2]
+    sys.path.insert(0, os.path.join(source, "scripts"))
+    import run_record
+
+    failures = []
+
+    def expect(what, got, wanted):
+        if got != wanted:
+            failures.append(f"{what}: {got!r}, expected {wanted!r}")
+
+    with open(os.path.join(source, "include/thin_ice_sim/study/run_record.hpp")) as f:
+        constants, version, load_columns, snapshot_columns, index_columns = cpp_names(f.read())
+    expect("schema version", run_record.SUMMARY_SCHEMA_VERSION, version)
+    for cpp, py in (("kSummaryFile", "SUMMARY_FILE"), ("kLoadsFile", "LOADS_FILE"),
+                    ("kCheckpointFile", "CHECKPOINT_FILE"), ("kSnapshotDir", "SNAPSHOT_DIR"),
+                    ("kSnapshotIndexFile", "SNAPSHOT_INDEX_FILE")):
+        expect(py, getattr(run_record, py), constants[cpp])
+    expect("LOAD_COLUMNS", run_record.LOAD_COLUMNS, load_columns)
+    expect("SNAPSHOT_COLUMNS", run_record.SNAPSHOT_COLUMNS, snapshot_columns)
+    expect("SNAPSHOT_INDEX_COLUMNS", run_record.SNAPSHOT_INDEX_COLUMNS, index_columns)
+    if len(load_columns) != 9:  # the parse found the array (nine columns before the panels)
+        failures.append(f"parsed {len(load_columns)} load columns from run_record.hpp, expected 9")
+
+    # A record as thin_ice_run writes it: quick.yaml (2 panels), two snapshots.
+    with tempfile.TemporaryDirectory() as out:
+        cmd = [run_tool, "--scenario", os.path.join(source, "config/scenarios/quick.yaml"), "--until-time", "0.02",
+               "--snapshots", "2", "--out", out]
+        done = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=300)
+        if done.returncode != 0:
+            sys.exit(f"FAIL: exit status {done.returncode}: {done.stderr.strip()}")
+        summary = run_record.read_summary(out)
+        expect("summary schema_version", summary.get("schema_version"), run_record.SUMMARY_SCHEMA_VERSION)
+        rows = run_record.read_load_rows(out)
+        expect("loads.csv columns", tuple(rows[0].keys()),
+               run_record.LOAD_COLUMNS + (run_record.panel_column(1), run_record.panel_column(2)))
+        expect("loads.csv rows", len(rows), 2)  # 0.02 s at 0.01 s per row
+        snapshots = os.path.join(out, run_record.SNAPSHOT_DIR)
+        with open(os.path.join(snapshots, run_record.SNAPSHOT_INDEX_FILE)) as f:
+            index = list(csv.DictReader(f))
+        expect("index.csv columns", tuple(index[0].keys()), run_record.SNAPSHOT_INDEX_COLUMNS)
+        expect("snapshot files", [r["file"] for r in index], ["cells_000000.csv", "cells_000002.csv"])
+        with open(os.path.join(snapshots, index[0]["file"])) as f:
+            expect("snapshot columns", tuple(next(csv.reader(f))), run_record.SNAPSHOT_COLUMNS)
+    if failures:
+        sys.exit("FAIL: " + "; ".join(failures))
+    print("run record: the mirror and a written record agree with run_record.hpp")
+
+
+if __name__ == "__main__":
+    main()
