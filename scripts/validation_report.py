@@ -5,10 +5,10 @@ the paper's Table 6 with this project's numbers beside the experiment's, the see
 resolution checks and the load plots. Only what the runs measured is reported; a series without
 a run is listed as not run. Three hand-written files in the runs folder are taken in as they are:
 misses.md (why each missed target is missed, and what was tried) under the targets' table,
-phase2.md (the strip bench and the paper's readings tried against those misses) after it,
+phase2.md (the strip bench and the paper's readings tried against those misses) after it, and
 procedure.md (the calibration procedure: where each value comes from, which series were only
-predicted) after it, and calibration.md (the calibration notes, newest first) at the end, after
-the load histories.
+predicted) after it. calibration.md, the dated notes (a journal, newest first), is linked at the
+end, after the load histories, not copied in.
 
   validation_report.py --runs docs/validation --out docs/validation.md
 """
@@ -637,14 +637,14 @@ def main():
         lines += ["## Where the broken ice goes: under or over the sheet", "",
                   "Per snapshot, the broken ice more than h/2 under and over the sheet's floating level and the",
                   "sheet's own cells pressed down (the sheet: the largest piece held together by intact bonds),",
-                  "drawn by scripts/ice_layers. The runs and what they show: the calibration notes below.", ""]
+                  "drawn by scripts/ice_layers. The runs and what they show: the calibration notes (linked at the end).", ""]
         lines += layer_sections
 
     if archived:
         lines += [f"## The runs of the earlier reading (no friction on the edge face: {ARCHIVE})", "",
                   "Until 2026-12-02 every run let two cells at different heights slide past each other vertically",
                   "without friction (docs/model.md, \"DEM contacts\"). These runs, their seeds, resolution checks and",
-                  f"experiments are kept in docs/validation/{ARCHIVE}/ under the names the calibration notes below",
+                  f"experiments are kept in docs/validation/{ARCHIVE}/ under the names the calibration notes (at the end)",
                   "give them; their scenario files have since changed, so they are history, not the model.", ""]
         lines += table6(archived) + [""]
         lines += seeds_and_resolution(archive, archived, archived_histories, archive_rel, level="###")
@@ -655,8 +655,13 @@ def main():
             if os.path.exists(os.path.join(root, name, "load.png")):
                 lines += [f"### {name}{label}", "", f"![{name}{label}]({root_rel}/{name}/load.png)", ""]
 
-    # The dated notes come last: they are the evidence, read after the results they led to.
-    lines += hand_written(os.path.join(a.runs, "calibration.md"))
+    # The dated notes come last: the evidence, read after the results they led to. They are a
+    # journal kept beside the runs, so the report links them instead of copying them in.
+    if os.path.exists(os.path.join(a.runs, "calibration.md")):
+        lines += ["## Calibration notes", "",
+                  f"What was run, why, and what it showed, in the order it was done, newest first: "
+                  f"[calibration.md]({rel}/calibration.md), a dated journal. Where an early note and a later "
+                  "one disagree, the later one stands; the sections above say how things stand now.", ""]
     path = a.out
     with open(path + ".partial", "w") as f:
         f.write("\n".join(lines))
