@@ -51,11 +51,11 @@ def scenario_of_run(summary):
     repository root unless absolute) as a dict, with the run's --set overrides applied: each
     "section.key=value" sets scenario[section][key], to a float where the value reads as one.
     Raises OSError, KeyError, TypeError or yaml.YAMLError where the file or a section is missing."""
-    import yaml
+    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+    import scenario_file
     path = summary["scenario"]["file"]
     path = path if os.path.isabs(path) else os.path.join(ROOT, path)
-    with open(path) as f:
-        scenario = yaml.safe_load(f)
+    scenario = scenario_file.load(path)
     for override in summary["scenario"].get("overrides", []):
         key, value = override.split("=", 1)
         section, name = key.split(".", 1)

@@ -2,6 +2,7 @@
 // overrides work, and every kind of bad input gives a one-line ScenarioError naming the file,
 // the key and what is allowed or expected. Bad files are made by editing the text of quick.yaml.
 #include <gtest/gtest.h>
+#include <yaml-cpp/yaml.h>
 
 #include <cmath>
 #include <cstdint>
@@ -143,6 +144,13 @@ class ScenarioFileTest : public ::testing::Test {
 
 // ----- Shipped scenarios ----------------------------------------------------------------------
 
+/// The texts a scenario's hash covers: its bases' (followed through their `base` keys), then its own.
+std::string chainText(const std::string& path) {
+  const YAML::Node root = YAML::LoadFile(path);
+  if (!root["base"]) return readText(path);
+  return chainText((fs::path(path).parent_path() / root["base"].as<std::string>()).string()) + readText(path);
+}
+
 TEST(Scenario, EveryShippedScenarioLoads) {
   std::set<std::string> found;
   for (const auto& entry : fs::directory_iterator(kScenarioDir)) {
@@ -152,7 +160,7 @@ TEST(Scenario, EveryShippedScenarioLoads) {
     ASSERT_NO_THROW(s = loadScenario(path)) << path;
     EXPECT_EQ(s.name, entry.path().stem().string());
     EXPECT_EQ(s.source, path);
-    EXPECT_EQ(s.hash, fnv1a(readText(path)));
+    EXPECT_EQ(s.hash, fnv1a(chainText(path)));
     EXPECT_NO_THROW(validateParams(s.params, path));
     found.insert(s.name);
   }
@@ -548,6 +556,52 @@ TEST_F(ScenarioFileTest, YamlSyntaxError) {
               {"YAML syntax error", "line"});
   expectError("not-a-map.yaml", "- just\n- a list\n", {"expected a map of sections"});
   expectError("empty.yaml", "", {"expected a map of sections", "got nothing"});
+}
+
+
+// ----- Bases: a file names another whose keys it starts from ---------------------------------
+
+TEST_F(ScenarioFileTest, ABaseGivesItsKeysAndTheFileOverridesThem) {
+  // quick.yaml as the base; the file changes one key of it and adds none.
+  write("quick_base.yaml", quick_);
+  const std::string path = write("child.yaml", "base: quick_base.yaml\nice:\n  thickness: 0.04\n");
+  const Scenario child = loadScenario(path);
+  const Scenario base = loadScenario((dir_ / "quick_base.yaml").string());
+  EXPECT_EQ(child.params.ice.thickness, 0.04);                         // the file's own value
+  EXPECT_EQ(child.params.ice.density, base.params.ice.density);        // from the base
+  EXPECT_EQ(child.params.structure.toe_x, base.params.structure.toe_x);
+  EXPECT_EQ(child.name, "child");
+  // The hash covers the base's text, then the file's: a change to the base is seen on resume.
+  EXPECT_EQ(child.hash, fnv1a(quick_ + readText(path)));
+  write("quick_base.yaml", quick_ + "# a comment\n");
+  EXPECT_NE(loadScenario(path).hash, child.hash);
+}
+
+TEST_F(ScenarioFileTest, ABaseChainsAndRequiredKeysMayComeFromAnyFileOfIt) {
+  write("a.yaml", quick_);
+  write("b.yaml", "base: a.yaml\nsheet:\n  seed: 7\n");
+  const Scenario c = loadScenario(write("c.yaml", "base: b.yaml\nsheet:\n  seed: 9\n"));
+  EXPECT_EQ(c.params.sheet.seed, 9u);
+  EXPECT_EQ(loadScenario((dir_ / "b.yaml").string()).params.sheet.seed, 7u);
+}
+
+TEST_F(ScenarioFileTest, ABaseThatIsMissingCyclesOrIsNotATextIsRefused) {
+  expectError("orphan.yaml", "base: nowhere.yaml\n", {"base:", "nowhere.yaml", "no such scenario file"});
+  write("x.yaml", "base: y.yaml\n");
+  write("y.yaml", "base: x.yaml\n");
+  const std::string cycle = errorOf((dir_ / "x.yaml").string());
+  EXPECT_NE(cycle.find("cycle"), std::string::npos) << cycle;
+  expectError("listed.yaml", "base: [a.yaml, b.yaml]\n", {"base: expected a text"});
+  expectError("empty_base.yaml", "base: \"\"\n", {"base: empty"});
+  // A key given twice in one file is still refused; once in the base and once in the file is not.
+  write("quick_base.yaml", quick_);
+  expectError("twice.yaml", "base: quick_base.yaml\nice:\n  thickness: 0.04\n  thickness: 0.05\n",
+              {"ice.thickness appears twice"});
+}
+
+TEST_F(ScenarioFileTest, RequiredKeysMissingFromTheWholeChainAreNamed) {
+  write("partial.yaml", "ice:\n  thickness: 0.05\n");
+  expectError("on_partial.yaml", "base: partial.yaml\n", {"missing required key ice.density"});
 }
 
 }  // namespace

@@ -21,10 +21,12 @@ struct Scenario {
   std::string source;       ///< path the scenario was read from ("" when built in code)
   Params params;
   std::vector<std::string> overrides;  ///< "section.key=value" applied after the file
-  std::string hash;         ///< 16 hex digits of a hash of the file text and the overrides
+  std::string hash;         ///< 16 hex digits of a hash of the file's text (its bases' first) and the overrides
 };
 
-/// Reads `path`, applies `overrides` ("section.key=value", as the runner's --set), validates
+/// Reads `path` (after the file its top-level `base` key names, a path relative to its folder,
+/// read the same way: the file's keys override its base's), applies `overrides`
+/// ("section.key=value", as the runner's --set), validates
 /// every value, and returns the scenario. Throws ScenarioError naming the file, the key, the
 /// value and what is allowed on: unknown section or key, missing required key, wrong type,
 /// non-physical value (h <= 0, nu outside [0, 0.5), negative density, cell size below the

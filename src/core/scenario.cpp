@@ -470,21 +470,23 @@ YAML::Node parseYaml(const std::string& text, const std::string& where) {
   }
 }
 
-void applyFile(const YAML::Node& root, const std::string& path, Params& params) {
+/// Applies the keys of one scenario file (its `base` resolved by the caller) to `params` and adds
+/// each "section.key" to `keys`. A key may appear once per file; a file's key overrides its base's.
+void applyFile(const YAML::Node& root, const std::string& path, Params& params, std::set<std::string>& keys) {
   const std::string where = path + ": ";
   std::string all_sections;
   for (const Section& s : sections()) all_sections += " " + s.name;
   if (!root.IsMap()) {
     throw ScenarioError(where + "expected a map of sections, got " + describe(root) +
-                        "; allowed sections: description" + all_sections);
+                        "; allowed sections: description base" + all_sections);
   }
-  std::set<std::string> seen;  // sections and "section.key"
+  std::set<std::string> seen;  // sections and "section.key" of this file
   for (const auto& entry : root) {
     const std::string name = entry.first.Scalar();
     if (!seen.insert(name).second) throw ScenarioError(where + printable(name) + " appears twice");
-    if (name == "description") {
+    if (name == "description" || name == "base") {
       if (!entry.second.IsScalar()) {
-        throw ScenarioError(where + "description: expected a text, got " + describe(entry.second));
+        throw ScenarioError(where + name + ": expected a text, got " + describe(entry.second));
       }
       continue;
     }
@@ -500,12 +502,17 @@ void applyFile(const YAML::Node& root, const std::string& path, Params& params) 
         throw ScenarioError(where + name + "." + key + " appears twice");
       }
       applyValue(params, section, f, item.second, where);
+      keys.insert(name + "." + key);
     }
   }
+}
+
+/// Every required key must have been given by the file or one of its bases.
+void checkRequiredKeys(const std::set<std::string>& keys, const std::string& path) {
   std::string missing, others;
   for (const Section& s : sections()) {
     for (const Field& f : s.fields) {
-      if (!f.required || seen.count(s.name + "." + f.key)) continue;
+      if (!f.required || keys.count(s.name + "." + f.key)) continue;
       if (missing.empty()) {
         missing = "missing required key " + s.name + "." + f.key + " (expected " + f.expected + ")";
       } else {
@@ -513,7 +520,44 @@ void applyFile(const YAML::Node& root, const std::string& path, Params& params) 
       }
     }
   }
-  if (!missing.empty()) throw ScenarioError(where + missing + others);
+  if (!missing.empty()) throw ScenarioError(path + ": " + missing + others);
+}
+
+/// How deep `base` files may chain (a series, its ice type, the test set-up: 3).
+constexpr int kMaxBaseDepth = 8;
+
+/// Reads the scenario file at `path` into `params`: first the file its `base` key names (a path
+/// relative to this file's folder, itself read the same way), then its own keys. Appends each
+/// file's text to `texts`, bases first; `chain` holds the files being read, for the cycle check.
+void applyScenarioFile(const std::string& path, Params& params, std::set<std::string>& keys,
+                       std::vector<std::string>& texts, std::vector<std::string>& chain) {
+  std::error_code ec;
+  const std::string canonical = std::filesystem::weakly_canonical(path, ec).string();
+  for (const std::string& c : chain) {
+    if (c == canonical) throw ScenarioError(path + ": base: the files name each other in a cycle");
+  }
+  if (static_cast<int>(chain.size()) >= kMaxBaseDepth) {
+    throw ScenarioError(path + ": base: more than " + std::to_string(kMaxBaseDepth) +
+                        " files deep; allowed: a chain of at most that many bases");
+  }
+  chain.push_back(canonical);
+  const std::string text = readFile(path);
+  const YAML::Node root = parseYaml(text, path + ": ");
+  if (root.IsMap() && root["base"] && root["base"].IsScalar()) {
+    const std::string base = root["base"].Scalar();
+    if (base.empty()) throw ScenarioError(path + ": base: empty; allowed: the path of a scenario file");
+    const std::filesystem::path resolved =
+        std::filesystem::path(base).is_absolute() ? std::filesystem::path(base)
+                                                  : std::filesystem::path(path).parent_path() / base;
+    try {
+      applyScenarioFile(resolved.string(), params, keys, texts, chain);
+    } catch (const ScenarioError& e) {
+      throw ScenarioError(path + ": base: " + e.what());
+    }
+  }
+  texts.push_back(text);
+  applyFile(root, path, params, keys);
+  chain.pop_back();
 }
 
 std::string trim(const std::string& t) {
@@ -616,9 +660,13 @@ void checkParams(const Params& p) {
   checkSheet(p);
 }
 
-/// 64-bit FNV-1a over the file bytes, then each override followed by a newline.
-std::string scenarioHash(const std::string& text, const std::vector<std::string>& overrides) {
-  std::uint64_t h = fnv1a64(text.data(), text.size());
+/// 64-bit FNV-1a over the files' bytes (the bases' first, then the file's: a file without a base
+/// hashes as its text alone), then each override followed by a newline.
+std::string scenarioHash(const std::vector<std::string>& texts, const std::vector<std::string>& overrides) {
+  std::uint64_t h = 0;
+  for (size_t k = 0; k < texts.size(); ++k) {
+    h = k == 0 ? fnv1a64(texts[k].data(), texts[k].size()) : fnv1a64(texts[k].data(), texts[k].size(), h);
+  }
   for (const std::string& o : overrides) {
     const std::string line = o + "\n";
     h = fnv1a64(line.data(), line.size(), h);
@@ -660,10 +708,13 @@ bool switchableOnResume(const std::string& key) {
 
 Scenario loadScenario(const std::string& path, const std::vector<std::string>& overrides) {
   Scenario scenario;
-  const std::string text = readFile(path);
+  std::vector<std::string> texts;  // the file's and its bases' texts, bases first
   std::map<std::string, std::string> overridden;  // "section.key" -> the override that set it
   try {
-    applyFile(parseYaml(text, path + ": "), path, scenario.params);
+    std::set<std::string> keys;
+    std::vector<std::string> chain;
+    applyScenarioFile(path, scenario.params, keys, texts, chain);
+    checkRequiredKeys(keys, path);
     for (const std::string& o : overrides) overridden[applyOverride(o, path, scenario.params)] = o;
   } catch (const YAML::Exception& e) {  // anything yaml-cpp throws that the checks above missed
     throw ScenarioError(path + ": " + e.what());
@@ -680,7 +731,7 @@ Scenario loadScenario(const std::string& path, const std::vector<std::string>& o
   scenario.name = std::filesystem::path(path).stem().string();
   scenario.source = path;
   scenario.overrides = overrides;
-  scenario.hash = scenarioHash(text, overrides);
+  scenario.hash = scenarioHash(texts, overrides);
   return scenario;
 }
 
