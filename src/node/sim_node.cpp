@@ -212,7 +212,7 @@ SimNode::SimNode(ros::NodeHandle nh, ros::NodeHandle private_nh)
   step_srv_ = nh_.advertiseService("sim/step", &SimNode::onStep, this);
   publishStructureTransform();
   // Started with the values checked above (the server would otherwise begin at the .cfg defaults).
-  reconfigure_ = std::make_unique<dynamic_reconfigure::Server<thin_ice_sim::SimConfig>>(private_nh_);
+  reconfigure_ = std::make_unique<dynamic_reconfigure::Server<thin_ice_sim::SimConfig>>(reconfigure_mutex_, private_nh_);
   thin_ice_sim::SimConfig now;
   now.real_time_factor = settings_.real_time_factor;
   now.max_pusher_speed = settings_.max_pusher_speed;

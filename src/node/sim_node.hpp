@@ -3,6 +3,7 @@
 // simulation is never touched from two threads.
 #pragma once
 
+#include <boost/thread/recursive_mutex.hpp>
 #include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/Twist.h>
 #include <ros/ros.h>
@@ -115,6 +116,9 @@ class SimNode {
   ros::ServiceServer pause_srv_, unpause_srv_, unpause_checked_srv_, reset_srv_, step_srv_;
   tf2_ros::TransformBroadcaster tf_;
   tf2_ros::StaticTransformBroadcaster static_tf_;
+  // The server's own mutex given to it, so that updateConfig from the constructor is safe (without
+  // one, dynamic_reconfigure warns of deadlocks at every start).
+  boost::recursive_mutex reconfigure_mutex_;
   std::unique_ptr<dynamic_reconfigure::Server<thin_ice_sim::SimConfig>> reconfigure_;
 
   bool have_command_ = false;

@@ -11,6 +11,7 @@
 //   gains also through dynamic_reconfigure (cfg/RigController.cfg)
 // The law, a PI controller on the low-passed load e = F_set - F_filtered, at each load sample:
 //   I = clamp(I + k_i e dt, min_speed, max_speed),  v = clamp(I + k_p e, min_speed, max_speed).
+#include <boost/thread/recursive_mutex.hpp>
 #include <dynamic_reconfigure/server.h>
 #include <geometry_msgs/Twist.h>
 #include <geometry_msgs/WrenchStamped.h>
@@ -41,7 +42,7 @@ class RigController {
     ROS_INFO("rig_controller: holding the horizontal load near %.1f N%s", set_point_,
              set_point_rate_ > 0.0 ? ", ramped up (~set_point_rate)" : "");
     // The set point and the gains change at run time (dynamic_reconfigure), from the values above.
-    reconfigure_ = std::make_unique<dynamic_reconfigure::Server<thin_ice_sim::RigControllerConfig>>(pnh);
+    reconfigure_ = std::make_unique<dynamic_reconfigure::Server<thin_ice_sim::RigControllerConfig>>(reconfigure_mutex_, pnh);
     thin_ice_sim::RigControllerConfig now;
     now.set_point = set_point_;
     now.proportional_gain = proportional_gain_;
@@ -92,6 +93,7 @@ class RigController {
   bool have_sample_ = false;
   ros::Publisher command_pub_;
   ros::Subscriber load_sub_;
+  boost::recursive_mutex reconfigure_mutex_;  // the server's, given to it (see sim_node.hpp)
   std::unique_ptr<dynamic_reconfigure::Server<thin_ice_sim::RigControllerConfig>> reconfigure_;
 };
 
