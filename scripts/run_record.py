@@ -26,8 +26,9 @@ def panel_column(panel):
 
 
 def loads_path(run_dir):
-    """loads.csv of a run, or loads.csv.partial where a run was killed before it finished (its rows
-    are written one by one); None when there is neither."""
+    """loads.csv of a run, or, where there is none, loads.csv.partial (a first segment killed before
+    it finished: its rows are written one by one); None when there is neither. A resumed segment
+    killed with SIGKILL leaves both: loads.csv, the record up to its resumption, is the one read."""
     path = os.path.join(run_dir, LOADS_FILE)
     if os.path.exists(path):
         return path

@@ -16,8 +16,14 @@ import tempfile
 
 
 def cpp_names(header_text):
-    """The names run_record.hpp gives: its string constants and its three column arrays."""
-    constants = dict(re.findall(r'inline constexpr const char\* (k\w+) = "([^"]*)";', header_text))
+    """The names run_record.hpp gives: its string constants (those inside a namespace block as
+    "namespace::kName") and its three column arrays."""
+    constant = re.compile(r'inline constexpr const char\* (k\w+) = "([^"]*)";')
+    constants = {}
+    for namespace, body in re.findall(r"namespace (\w+) \{(.*?)\}  // namespace \1", header_text, re.S):
+        constants.update({f"{namespace}::{k}": v for k, v in constant.findall(body)})
+    top_level = re.sub(r"namespace (\w+) \{.*?\}  // namespace \1", "", header_text, flags=re.S)
+    constants.update(dict(constant.findall(top_level)))
     version = int(re.search(r"kSummarySchemaVersion = (\d+);", header_text).group(1))
 
     def array(name):
@@ -27,7 +33,7 @@ def cpp_names(header_text):
             if item.startswith('"'):
                 items.append(item.strip('"'))
             elif item:
-                items.append(constants[item.split("::")[-1]])
+                items.append(constants[item])
         return tuple(items)
 
     return constants, version, array("kLoadColumns"), array("kSnapshotColumns"), array("kSnapshotIndexColumns")

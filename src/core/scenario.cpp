@@ -4,7 +4,9 @@
 // Layout: top-level sections ice, sheet, water, bottom, structure, pusher, channel, numerics, each
 // a map whose keys are the snake_case field names of the matching struct in params.hpp
 // (IceParams, IceSheetSpec, WaterParams, BottomParams, StructureParams, PusherParams,
-// ChannelParams, NumericsParams), plus an optional top-level `description:` text.
+// ChannelParams, NumericsParams), plus an optional top-level `description:` text and an optional
+// top-level `base:` naming another scenario file (relative to this file's folder) that is read
+// first and whose keys this file's override (config/scenarios/base/).
 //   Enums:    sheet.layout: jittered_grid | poisson_disk
 //   Integers: structure.panels, sheet.lloyd_iterations, numerics.max_steps_between_rebuilds,
 //             numerics.structure_substeps,
@@ -17,7 +19,7 @@
 //   ice.youngs_modulus ice.vertical_modulus ice.poisson_ratio ice.smoothing_exponent_h
 //   ice.smoothing_exponent_v ice.compression_coupling
 //   sheet.length sheet.width sheet.cell_size structure.toe_x numerics.time_step
-// They must be in the file itself (an override cannot stand in for one). Every other key
+// They must be in the file or one of its bases (an override cannot stand in for one). Every other key
 // (ice.friction_ice_ice and the two damping ratios included) takes its params.hpp default; the
 // sections water, bottom, pusher and channel may be left out altogether.
 //
@@ -532,7 +534,8 @@ constexpr int kMaxBaseDepth = 8;
 void applyScenarioFile(const std::string& path, Params& params, std::set<std::string>& keys,
                        std::vector<std::string>& texts, std::vector<std::string>& chain) {
   std::error_code ec;
-  const std::string canonical = std::filesystem::weakly_canonical(path, ec).string();
+  std::string canonical = std::filesystem::weakly_canonical(path, ec).string();
+  if (ec || canonical.empty()) canonical = path;  // compared as given: no false cycle between two such files
   for (const std::string& c : chain) {
     if (c == canonical) throw ScenarioError(path + ": base: the files name each other in a cycle");
   }

@@ -172,11 +172,15 @@ visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const st
   legend.pose.position = point(x_high, 0.0, z_high + 1.5 * text_height);
   legend.scale.z = 0.7 * text_height;
   legend.color = colour(0.85, 0.85, 0.85);
+  char arrow_legend[64] = "";  // none without an arrow (~load_arrow_scale 0)
+  if (load_arrow_scale > 0.0) {
+    std::snprintf(arrow_legend, sizeof arrow_legend, "   magenta: F_cal, %.3g m per kN/m of width", 1e3 * load_arrow_scale);
+  }
   char legend_text[256];
   std::snprintf(legend_text, sizeof legend_text,
                 "pale: intact sheet   blue to red: broken ice, top 0 to 0.3 m above water\n"
-                "orange: pusher   brown: false bottom   magenta: F_cal, %.3g m per kN/m of width",
-                1e3 * load_arrow_scale);
+                "orange: pusher   brown: false bottom%s",
+                arrow_legend);
   legend.text = legend_text;
   array.markers.push_back(legend);
   return array;

@@ -156,13 +156,14 @@ std::vector<SnapshotEntry> readSnapshotIndex(const std::string& run_dir) {
   std::vector<SnapshotEntry> entries;
   for (const CsvRow& row : readCsv(index_path)) {
     SnapshotEntry e;
-    const std::string name = row.count("file") ? row.at("file") : "";
+    namespace column = run_record::index_column;
+    const std::string name = row.count(column::kFile) ? row.at(column::kFile) : "";
     if (!run_record::parseSnapshotFileName(name, e.loads_row)) {
       throw std::runtime_error(index_path + ": file '" + name + "' is not a cells_RRRRRR.csv name (six digits)");
     }
     e.file = run_dir + "/" + run_record::kSnapshotDir + "/" + name;
-    e.time = csvNumber(row, "time_s", index_path);
-    e.pushed_length = csvNumber(row, "pushed_length_m", index_path);
+    e.time = csvNumber(row, column::kTime, index_path);
+    e.pushed_length = csvNumber(row, column::kPushedLength, index_path);
     entries.push_back(e);
   }
   return entries;
@@ -171,14 +172,15 @@ std::vector<SnapshotEntry> readSnapshotIndex(const std::string& run_dir) {
 std::vector<CellSnapshot> readCellSnapshot(const std::string& path) {
   std::vector<CellSnapshot> cells;
   for (const CsvRow& row : readCsv(path)) {
+    namespace column = run_record::snapshot_column;
     CellSnapshot c{};
-    c.x = csvNumber(row, "x_m", path);
-    c.y = csvNumber(row, "y_m", path);
-    c.z = csvNumber(row, "z_m", path);
-    c.yaw = csvNumber(row, "yaw_rad", path);
-    c.in_intact_sheet = csvNumber(row, "in_intact_sheet", path) != 0.0;
+    c.x = csvNumber(row, column::kX, path);
+    c.y = csvNumber(row, column::kY, path);
+    c.z = csvNumber(row, column::kZ, path);
+    c.yaw = csvNumber(row, column::kYaw, path);
+    c.in_intact_sheet = csvNumber(row, column::kInIntactSheet, path) != 0.0;
     // Snapshots written before 2026-12-02 have no piece_cells: 0 there means "not recorded".
-    c.piece_cells = row.count("piece_cells") ? static_cast<int>(csvNumber(row, "piece_cells", path)) : 0;
+    c.piece_cells = row.count(column::kPieceCells) ? static_cast<int>(csvNumber(row, column::kPieceCells, path)) : 0;
     cells.push_back(c);
   }
   return cells;

@@ -145,10 +145,10 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
     const double f = by_length ? sim.pushedLength() / o.until_length : sim.time() / o.until_time;
     return std::clamp(f, 0.0, 1.0);
   };
-  const std::string csv_path = o.out + "/loads.csv";
+  const std::string csv_path = o.out + "/" + thin_ice::run_record::kLoadsFile;
   std::ofstream csv(csv_path + ".partial", std::ios::trunc);
   if (!csv) throw std::runtime_error("cannot write '" + csv_path + ".partial'");
-  const std::string snapshot_dir = o.out + "/snapshots";
+  const std::string snapshot_dir = o.out + "/" + thin_ice::run_record::kSnapshotDir;
   const std::string snapshot_index = snapshot_dir + "/" + thin_ice::run_record::kSnapshotIndexFile;
   if (o.snapshots > 0 && !(cont.active && std::filesystem::exists(snapshot_index))) {
     std::ofstream(snapshot_index) << thin_ice::run_record::headerLine(thin_ice::run_record::kSnapshotIndexColumns);
@@ -375,7 +375,7 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
       overrides.insert(overrides.end(), o.overrides.begin(), o.overrides.end());
       loaded = thin_ice::loadScenario(loaded.source, overrides);
     }
-    const std::string checkpoint_path = dir + "/checkpoint.bin";
+    const std::string checkpoint_path = dir + "/" + thin_ice::run_record::kCheckpointFile;
     if (!std::filesystem::exists(checkpoint_path)) {
       throw ResumeError(dir + " has no checkpoint.bin (thin_ice_run writes one at the end of every healthy run "
                         "since 2026-12-01)");
@@ -417,7 +417,7 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
     o.output_interval = summary.output_interval;
 
     // The history so far, which must end where the checkpoint is.
-    const std::string csv_path = dir + "/loads.csv";
+    const std::string csv_path = dir + "/" + thin_ice::run_record::kLoadsFile;
     std::ifstream csv(csv_path);
     if (!csv) throw ResumeError("no " + csv_path);
     cont.previous_csv.assign(std::istreambuf_iterator<char>(csv), std::istreambuf_iterator<char>());
@@ -553,7 +553,8 @@ int main(int argc, char** argv) {
   }
   try {
     const double setup_wall = std::chrono::duration<double>(Clock::now() - setup_start).count();
-    std::filesystem::create_directories(options.out + (options.snapshots > 0 ? "/snapshots" : ""));
+    std::filesystem::create_directories(options.out +
+                                        (options.snapshots > 0 ? std::string("/") + thin_ice::run_record::kSnapshotDir : ""));
     thin_ice_tools::stopOnSigintAndSigterm();
     const RunResult result = runSimulation(*sim, options, continuation);
     if (continuation.active && !result.error.empty()) {
@@ -565,13 +566,13 @@ int main(int argc, char** argv) {
                                                     result.first_failure_length);
     // The checkpoint first: a summary that says "completed" or "interrupted" has one beside it
     // that matches its loads.csv. An unhealthy state is not worth going on from.
-    const std::string checkpoint_path = options.out + "/checkpoint.bin";
+    const std::string checkpoint_path = options.out + "/" + thin_ice::run_record::kCheckpointFile;
     if (result.error.empty()) {
       thin_ice::writeCheckpoint(checkpoint_path, thin_ice::takeCheckpoint(*sim));
     } else {
       std::filesystem::remove(checkpoint_path);
     }
-    thin_ice::writeFileAtomically(options.out + "/summary.json",
+    thin_ice::writeFileAtomically(options.out + "/" + thin_ice::run_record::kSummaryFile,
                                   summaryJson(*sim, options, result, continuation, stats, setup_wall));
     if (options.profiles) writeProfiles(*sim, options.out + "/profiles.csv");
     printReport(*sim, options, stats);

@@ -41,11 +41,30 @@ inline constexpr const char* kLoadColumns[] = {
     load_column::kHorizontalCalibrated, load_column::kVerticalRaw, load_column::kPusherForce,
     load_column::kIntactBonds, load_column::kBrokenBonds,  load_column::kContacts};
 
-/// snapshots/cells_RRRRRR.csv: one row per cell; the polygon as "x0 y0 x1 y1 ..." [m] in one field.
-inline constexpr const char* kSnapshotColumns[] = {"cell", "x_m", "y_m", "z_m", "yaw_rad",
-                                                   "in_intact_sheet", "piece_cells", "polygon_xy_m"};
+/// snapshots/cells_RRRRRR.csv: one row per cell.
+namespace snapshot_column {
+inline constexpr const char* kCell = "cell";
+inline constexpr const char* kX = "x_m";                         ///< [m] centroid
+inline constexpr const char* kY = "y_m";                         ///< [m]
+inline constexpr const char* kZ = "z_m";                         ///< [m]
+inline constexpr const char* kYaw = "yaw_rad";                   ///< [rad]
+inline constexpr const char* kInIntactSheet = "in_intact_sheet";  ///< 1 while any of its bonds holds
+inline constexpr const char* kPieceCells = "piece_cells";        ///< cells of its bonded piece
+inline constexpr const char* kPolygon = "polygon_xy_m";          ///< "x0 y0 x1 y1 ..." [m], one field
+}  // namespace snapshot_column
+inline constexpr const char* kSnapshotColumns[] = {
+    snapshot_column::kCell, snapshot_column::kX,        snapshot_column::kY,
+    snapshot_column::kZ,    snapshot_column::kYaw,      snapshot_column::kInIntactSheet,
+    snapshot_column::kPieceCells, snapshot_column::kPolygon};
+
 /// snapshots/index.csv: one row per snapshot file.
-inline constexpr const char* kSnapshotIndexColumns[] = {"file", "time_s", "pushed_length_m"};
+namespace index_column {
+inline constexpr const char* kFile = "file";
+inline constexpr const char* kTime = "time_s";                   ///< [s] simulated
+inline constexpr const char* kPushedLength = "pushed_length_m";  ///< [m]
+}  // namespace index_column
+inline constexpr const char* kSnapshotIndexColumns[] = {index_column::kFile, index_column::kTime,
+                                                        index_column::kPushedLength};
 
 /// "panel_K_N" for panel K (1-based).
 std::string panelColumn(int panel);
