@@ -1,12 +1,18 @@
 // CUDA backend: the step of the CPU backend (src/core/cpu_backend.cpp) with every stage on the
 // device, calling the same inline laws (include/thin_ice_sim/physics/).
 //
-// One step, five kernels (one thread per cell, bond or pair):
-//   placeCells     world polygons, boxes, (cos, sin) yaw                     placeCell()
-//   bondForces     RMIB forces and failure, Eqs. 8-13                        rmibBondForce()
-//   contactForces  DEM contacts of the candidate pairs, Eqs. 1-4             demContactForce()
-//   stepCells      gather, water, planes, symplectic Euler, structure loads  stepCell()
-//   finishStep     pusher, step counters, Algorithm 1's rebuild test
+// One step, six kernels (one thread per cell, bond or pair):
+//   placeCells      world polygons, boxes, (cos, sin) yaw                    placeCell()
+//   bondForces      RMIB forces and failure, Eqs. 8-13                       rmibBondForce()
+//   contactForces   DEM contacts of the candidate pairs, Eqs. 1-4            demContactForce()
+//   stepCells       gather, water, planes, symplectic Euler, structure loads beginCellStep()
+//   subcycleCells   the structure sub-steps of the cells listed by stepCells  subcycleStructureContact()
+//   finishStep      pusher, step counters, Algorithm 1's rebuild test
+// The few cells that can reach the structure face take n sub-steps (cell_forces.hpp). Run inside
+// stepCells, each such cell held its whole warp for the length of its chain and gave the kernel
+// the registers and stack of the longest path (M-2 pile, 6000 cells on an H200: stepCells 155 us
+// of a 262 us step, in 47 blocks). So stepCells lists them and subcycleCells runs the list in
+// warps of its own, in small blocks spread over the multiprocessors.
 // Steps are launched in batches captured as one CUDA graph (kBatchSteps steps): a 75-cell strip
 // would otherwise spend its time launching kernels. A step that finds the stop flag set (a
 // rebuild is due, or a cell blew up) does nothing, so the host, which looks at the flags after
@@ -49,6 +55,18 @@ constexpr int kStopRebuild = 1;    ///< flag bits
 constexpr int kStopBlown = 2;
 constexpr int kLoadTotals = 7;     ///< horizontal, lateral, vertical, pusher, torque x y z
 constexpr int kLoadPerPanel = 6;   ///< horizontal, lateral, vertical, torque x y z
+constexpr int kSubcycleThreads = 32;     ///< subcycleCells' block: one warp, so the list spreads over the SMs
+constexpr int kSubcycleBlocksPerSm = 4;  ///< its grid's cap: blocks per multiprocessor
+
+/// subcycleCells' grid: enough warps for every cell, at most kSubcycleBlocksPerSm per
+/// multiprocessor (the list is the few cells at the face; a larger list loops).
+int subcycleBlocks(int cells) {
+  int device = 0, multiprocessors = 1;
+  TIS_CUDA_CHECK(cudaGetDevice(&device));
+  TIS_CUDA_CHECK(cudaDeviceGetAttribute(&multiprocessors, cudaDevAttrMultiProcessorCount, device));
+  const int wanted = (cells + kSubcycleThreads - 1) / kSubcycleThreads;
+  return std::max(1, std::min(wanted, kSubcycleBlocksPerSm * multiprocessors));
+}
 
 /// Device scalars of the run, read back after each batch.
 struct RunScalars {
@@ -63,6 +81,7 @@ struct RunScalars {
   int touching;             ///< contacts with S > 0 in this step (accumulating)
   int last_touching;        ///< ... in the last step taken
   int pair_count;           ///< candidate pairs in the list
+  int subcycled;            ///< cells stepCells listed for subcycleCells in this step
 };
 
 // --- The step ---------------------------------------------------------------------------------
@@ -127,16 +146,8 @@ __global__ void contactForces(int capacity, RunScalars* run, ModelConstants c, c
   if (f.touching) atomicAdd(&run->touching, 1);
 }
 
-__global__ void stepCells(int n, RunScalars* run, ModelConstants c, CellStepInputs in, const CellMotion* reference,
-                          CellMotion* motion, StructureContact* structure, double* totals, double* panels) {
-  const int k = blockIdx.x * blockDim.x + threadIdx.x;
-  if (k >= n || run->stop) return;
-  const CellStepResult r = stepCell(k, c, in, run->pusher_x, run->pusher_velocity, kRunawaySpeed, reference[k],
-                                    motion[k], structure[k]);
-  if (r.blown) atomicOr(&run->flags, kStopBlown);
-  if (r.moved_far) atomicOr(&run->flags, kStopRebuild);
-  if (r.pusher_fx != 0.0) atomicAdd(&totals[3], r.pusher_fx);
-  const StructureContact& s = structure[k];
+/// Adds cell k's structure load (its slots in `s`) to the step's totals and its panels.
+__device__ void addStructureLoads(const ModelConstants& c, const StructureContact& s, double* totals, double* panels) {
   for (int slot = 0; slot < s.panel_count; ++slot) {
     const SlotLoad l = structureSlotLoad(c, s, slot);
     atomicAdd(&totals[0], l.fx);
@@ -155,15 +166,61 @@ __global__ void stepCells(int n, RunScalars* run, ModelConstants c, CellStepInpu
   }
 }
 
+/// The runaway guard and the rebuild test of a cell whose step is done, raised as run flags.
+__device__ void raiseCellFlags(RunScalars* run, const ModelConstants& c, const CellMotion& reference,
+                               const CellMotion& motion) {
+  CellStepResult r;
+  judgeCellStep(c, kRunawaySpeed, reference, motion, r);
+  if (r.blown) atomicOr(&run->flags, kStopBlown);
+  if (r.moved_far) atomicOr(&run->flags, kStopRebuild);
+}
+
+__global__ void stepCells(int n, RunScalars* run, ModelConstants c, CellStepInputs in, const CellMotion* reference,
+                          CellMotion* motion, StructureContact* structure, int* subcycled_cells,
+                          HeldForces* held, double* totals, double* panels) {
+  const int k = blockIdx.x * blockDim.x + threadIdx.x;
+  if (k >= n || run->stop) return;
+  double pusher_fx = 0.0;
+  HeldForces h;
+  const bool subcycled =
+      beginCellStep(k, c, in, run->pusher_x, run->pusher_velocity, motion[k], structure[k], pusher_fx, h);
+  if (pusher_fx != 0.0) atomicAdd(&totals[3], pusher_fx);
+  if (subcycled) {  // its step ends in subcycleCells
+    const int slot = atomicAdd(&run->subcycled, 1);
+    subcycled_cells[slot] = k;
+    held[slot] = h;
+    return;
+  }
+  raiseCellFlags(run, c, reference[k], motion[k]);
+  addStructureLoads(c, structure[k], totals, panels);
+}
+
+/// The cells stepCells listed, a grid-stride loop over them: the list's length is known only on
+/// the device, and the launch is part of a captured graph.
+__global__ void subcycleCells(RunScalars* run, ModelConstants c, CellStepInputs in, const CellMotion* reference,
+                              CellMotion* motion, StructureContact* structure, const int* subcycled_cells,
+                              const HeldForces* held, double* totals, double* panels) {
+  if (run->stop) return;
+  const int count = run->subcycled;
+  for (int slot = blockIdx.x * blockDim.x + threadIdx.x; slot < count; slot += gridDim.x * blockDim.x) {
+    const int k = subcycled_cells[slot];
+    subcycleStructureContact(k, c, in, held[slot], motion[k], structure[k]);
+    raiseCellFlags(run, c, reference[k], motion[k]);
+    addStructureLoads(c, structure[k], totals, panels);
+  }
+}
+
 /// The run's scalars after a contact rebuild: the new pair count, no flags, counting anew.
 __global__ void startAfterRebuild(RunScalars* run, int pair_count) {
   run->pair_count = pair_count;
   run->flags = 0;
   run->stop = 0;
   run->steps_since_rebuild = 0;
+  run->subcycled = 0;
 }
 
 __global__ void finishStep(RunScalars* run, double time_step, int max_steps_between_rebuilds) {
+  run->subcycled = 0;  // the list is this step's
   if (run->stop) return;
   run->pusher_x += run->pusher_velocity * time_step;
   run->steps_taken += 1;
@@ -211,6 +268,9 @@ class CudaBackend final : public Backend {
     box_.resize(static_cast<size_t>(n_) * 4);
     turn_.resize(n_);
     structure_.resize(n_);
+    subcycled_cells_.resize(n_);
+    held_.resize(n_);
+    subcycle_blocks_ = subcycleBlocks(n_);
     totals_.resize(kLoadTotals);
     panels_.resize(static_cast<size_t>(kLoadPerPanel) * model.constants.panels);
     run_.resize(1);
@@ -380,7 +440,13 @@ class CudaBackend final : public Backend {
                                contacts_.touching(),
                                contacts_.load()};
     stepCells<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, c, in, reference_.get(), motion_.get(),
-                                                        structure_.get(), totals_.get(), panels_.get());
+                                                        structure_.get(), subcycled_cells_.get(), held_.get(),
+                                                        totals_.get(), panels_.get());
+    if (c.structure_substeps > 1) {
+      subcycleCells<<<subcycle_blocks_, kSubcycleThreads, 0, stream_>>>(
+          run, c, in, reference_.get(), motion_.get(), structure_.get(), subcycled_cells_.get(), held_.get(),
+          totals_.get(), panels_.get());
+    }
     finishStep<<<1, 1, 0, stream_>>>(run, c.time_step, c.max_steps_between_rebuilds);
   }
 
@@ -462,6 +528,9 @@ class CudaBackend final : public Backend {
   DeviceArray<Vec2> world_, turn_;
   DeviceArray<double> box_;
   DeviceArray<StructureContact> structure_;
+  DeviceArray<int> subcycled_cells_;  ///< (cells) the cells listed for subcycleCells, run->subcycled of them
+  DeviceArray<HeldForces> held_;      ///< (cells) what their sub-steps hold, by list slot
+  int subcycle_blocks_ = 1;           ///< subcycleCells' grid
   DeviceArray<double> totals_, panels_;
   DeviceArray<RunScalars> run_;
   DeviceContactList contacts_;

@@ -82,13 +82,18 @@ struct LoneCell {
     bond_load[0].force_on_j = {fx, 0.0};
   }
 
-  void step(const ModelConstants& c) {
+  /// The step's inputs, with the cell placed at its current pose.
+  CellStepInputs place() {
     placeCell(motion, vertex_x, vertex_y, vertex_count, world, box);
-    const CellStepInputs in = {&mass,           &inertia,        &area,         &inverse_mass,
-                               &inverse_inertia, &polar_moment,   &vertex_count, vertex_x,
-                               vertex_y,        world,           box,           bond_offsets,
-                               bond_entries,    bond_state,      bond_load,     contact_offsets,
-                               nullptr,         nullptr,         nullptr};
+    return {&mass,           &inertia,        &area,         &inverse_mass,
+            &inverse_inertia, &polar_moment,   &vertex_count, vertex_x,
+            vertex_y,        world,           box,           bond_offsets,
+            bond_entries,    bond_state,      bond_load,     contact_offsets,
+            nullptr,         nullptr,         nullptr};
+  }
+
+  void step(const ModelConstants& c) {
+    const CellStepInputs in = place();
     StructureContact s;
     const CellStepResult r = stepCell(0, c, in, -100.0, 0.0, kRunawaySpeed, reference, motion, s);
     ASSERT_FALSE(r.blown);
@@ -171,6 +176,59 @@ TEST(StructureSubsteps, FarFromTheFaceTheSubstepCountChangesNothing) {
   EXPECT_EQ(one.motion.x, eight.motion.x);
   EXPECT_EQ(one.motion.vx, eight.motion.vx);
   EXPECT_EQ(eight.structure_impulse_x, 0.0);
+}
+
+TEST(StructureSubsteps, TheFirstHalfHandsOnExactlyTheCellsThatCanReachTheFaceWithinTheStep) {
+  // The CUDA backend runs a step in two passes (beginCellStep for every cell, then the sub-steps
+  // of the cells it handed on); the CPU backend does the same. A cell at 0.5 m/s with a held
+  // 5 N and no drag, buoyancy balancing its weight: it can travel v dt = 1.2e-5 m in a step of
+  // 24 us (the held force adds F dt^2/m = 1.6e-9 m), so it is handed on when its front edge is
+  // 1.0e-5 m from the face and not when it is 1.4e-5 m away.
+  const double v0 = 0.5, push = 5.0;
+  const double travel = (v0 + push / kMass * kOuterStep) * kOuterStep;
+  for (double gap : {1.0e-5, 1.4e-5}) {
+    const ModelConstants c = loneCell(0.5 * kSide + gap, 0.0, kOuterStep, 8);
+    LoneCell cell(0.0, v0);
+    cell.holdForce(push);
+    const CellStepInputs in = cell.place();
+    StructureContact s;
+    HeldForces held{};
+    double pusher_fx = -1.0;
+    const bool handed_on = beginCellStep(0, c, in, -100.0, 0.0, cell.motion, s, pusher_fx, held);
+    EXPECT_EQ(pusher_fx, 0.0);
+    if (gap < travel) {
+      ASSERT_TRUE(handed_on) << "gap " << gap;
+      EXPECT_EQ(cell.motion.x, 0.0);  // not moved yet: its step is the second half's
+      EXPECT_EQ(held.fx, push);
+      EXPECT_EQ(held.fy, 0.0);
+      EXPECT_NEAR(held.fz, 0.0, 1e-12 * kMass * 9.81);
+      EXPECT_NEAR(held.travel, travel, 1e-9 * travel);
+      // The second half finishes the step as stepCell does in one call, bit for bit.
+      LoneCell whole(0.0, v0);
+      whole.holdForce(push);
+      const CellStepInputs whole_in = whole.place();
+      StructureContact whole_s;
+      stepCell(0, c, whole_in, -100.0, 0.0, kRunawaySpeed, whole.reference, whole.motion, whole_s);
+      subcycleStructureContact(0, c, in, held, cell.motion, s);
+      EXPECT_EQ(cell.motion.x, whole.motion.x);
+      EXPECT_EQ(cell.motion.vx, whole.motion.vx);
+      EXPECT_EQ(s.panel_count, whole_s.panel_count);
+    } else {
+      EXPECT_FALSE(handed_on) << "gap " << gap;
+      EXPECT_GT(cell.motion.x, 0.0);  // the whole step is taken in the first half
+      EXPECT_EQ(s.panel_count, 0);
+    }
+  }
+  // With one sub-step no cell is handed on, even one pressed into the face.
+  const ModelConstants single = loneCell(0.5 * kSide - 1e-6, 0.0, kOuterStep, 1);
+  LoneCell pressed(0.0, v0);
+  const CellStepInputs in = pressed.place();
+  StructureContact s;
+  HeldForces held{};
+  double pusher_fx = 0.0;
+  EXPECT_FALSE(beginCellStep(0, single, in, -100.0, 0.0, pressed.motion, s, pusher_fx, held));
+  EXPECT_EQ(s.panel_count, 1);
+  EXPECT_GT(s.fx[0], 0.0);  // the ice pushes the structure in +x
 }
 
 }  // namespace

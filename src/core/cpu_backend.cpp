@@ -50,6 +50,9 @@ class CpuBackend final : public Backend {
     structure_.resize(n);
     pusher_fx_.resize(n);
     loaded_.assign(n, 0);
+    subcycled_.assign(n, 0);
+    held_.resize(n);
+    subcycled_cells_.reserve(n);
     bond_load_.resize(model_.bond_rest.size());
     bond_incidence_.build(n, model_.bond_i, model_.bond_j);
     reset();
@@ -318,12 +321,36 @@ class CpuBackend final : public Backend {
                                contact_incidence_.entries.data(),
                                contact_touching_.data(),
                                contact_load_.data()};
+    // stepCell in two passes, as the CUDA backend runs it: every cell's first half, then the
+    // structure sub-steps of the few cells that can reach the face, each pass's cells one by
+    // one (a cell's step reads no other cell's motion, so the order changes no result). The
+    // second pass hands its cells out one at a time, so that they do not all fall to the thread
+    // whose static share holds the front of the sheet.
 #pragma omp parallel for num_threads(threads_) schedule(static) if (parallel_) reduction(|| : blown, moved_far)
     for (int k = 0; k < n; ++k) {
-      const CellStepResult r =
-          stepCell(k, c, in, pusher_x_, pusher_velocity, kRunawaySpeed, reference_[k], motion_[k], structure_[k]);
+      CellStepResult r;
+      subcycled_[k] = beginCellStep(k, c, in, pusher_x_, pusher_velocity, motion_[k], structure_[k], r.pusher_fx,
+                                    held_[k]);
       pusher_fx_[k] = r.pusher_fx;
+      if (subcycled_[k]) continue;
+      judgeCellStep(c, kRunawaySpeed, reference_[k], motion_[k], r);
       loaded_[k] = r.pusher_fx != 0.0 || structure_[k].panel_count > 0;
+      blown = blown || r.blown;
+      moved_far = moved_far || r.moved_far;
+    }
+    subcycled_cells_.clear();
+    for (int k = 0; k < n; ++k) {
+      if (subcycled_[k]) subcycled_cells_.push_back(k);
+    }
+    const int subcycled = static_cast<int>(subcycled_cells_.size());
+#pragma omp parallel for num_threads(threads_) schedule(dynamic, 1) if (parallel_ && subcycled > 1) \
+    reduction(|| : blown, moved_far)
+    for (int i = 0; i < subcycled; ++i) {
+      const int k = subcycled_cells_[i];
+      subcycleStructureContact(k, c, in, held_[k], motion_[k], structure_[k]);
+      CellStepResult r;
+      judgeCellStep(c, kRunawaySpeed, reference_[k], motion_[k], r);
+      loaded_[k] = pusher_fx_[k] != 0.0 || structure_[k].panel_count > 0;
       blown = blown || r.blown;
       moved_far = moved_far || r.moved_far;
     }
@@ -376,6 +403,9 @@ class CpuBackend final : public Backend {
   std::vector<StructureContact> structure_;
   std::vector<double> pusher_fx_;         ///< (cells) [N]
   std::vector<unsigned char> loaded_;     ///< (cells) 1: the pusher or the structure acts on it this step
+  std::vector<unsigned char> subcycled_;  ///< (cells) 1: it takes the structure sub-steps this step
+  std::vector<HeldForces> held_;          ///< (cells) what its sub-steps hold, where subcycled_
+  std::vector<int> subcycled_cells_;      ///< the cells with subcycled_ set, in cell order
   std::vector<unsigned char> bond_state_;  ///< (bonds) BondState
   std::vector<PairLoad> bond_load_;
   Incidence bond_incidence_, contact_incidence_;

@@ -245,16 +245,24 @@ TIS_HD Vec2 placeCell(const CellMotion& m, const double* vertex_x, const double*
   return {cs, sn};
 }
 
-/// Inlined like the rest: with it, nvcc -arch=sm_90 gives the stepCells kernel 138 registers and a
-/// 1296 B stack frame (126 and 1232 B before the sub-steps); kept out of line with __noinline__ it
-/// took 168 registers and 3040 B of stack (ptxas -v, 2026-12-01).
+/// What the first half of a cell's step hands to its second half when the cell takes the
+/// structure sub-steps: the slow forces held through them and the margin of the panel range.
+struct HeldForces {
+  double fx, fy, fz;  ///< [N] bonds, contacts, water, pusher, walls and bottom at the step's start
+  double tz;          ///< [N m] their yaw moment
+  double travel;      ///< [m] bound on how far any point of the cell moves in the step
+};
+
+/// Inlined like the rest. ptxas -v (nvcc 13, -arch=sm_90): the CUDA kernel that runs it
+/// (subcycleCells) takes 136 registers and a 1296 B stack frame, and stepCells, which no longer
+/// does, 150 and 1024 B (160 and 1296 B when stepCells ran the sub-steps itself).
 /// n sub-steps of dt/n of one cell that can reach the structure (see the file comment): the
 /// face's force anew in each, the slow forces (fx, fy, fz, tz) held. `s` gets the mean load of
 /// each panel slot over the sub-steps and its force-weighted mean point (the cell moves
 /// micrometres in one step, so the moment of the mean is the mean moment to that accuracy).
-TIS_HD void subcycleStructureContact(int k, const ModelConstants& c, const CellStepInputs& in, double margin,
-                                     double fx, double fy, double fz, double tz, CellMotion& motion,
-                                     StructureContact& s) {
+TIS_HD void subcycleStructureContact(int k, const ModelConstants& c, const CellStepInputs& in,
+                                     const HeldForces& held, CellMotion& motion, StructureContact& s) {
+  const double margin = held.travel;
   const int n = in.vertex_count[k];
   const double mass = in.mass[k], inertia = in.inertia[k], area = in.area[k];
   const double inverse_mass = in.inverse_mass[k], inverse_inertia = in.inverse_inertia[k];
@@ -287,7 +295,7 @@ TIS_HD void subcycleStructureContact(int k, const ModelConstants& c, const CellS
                 n, poly, box);
       placed = poly;
     }
-    double sx = fx, sy = fy, sz = fz, stz = tz;
+    double sx = held.fx, sy = held.fy, sz = held.fz, stz = held.tz;
     addStructureForces(c, placed, n, motion, mass, inertia, area, first, last, now, sx, sy, sz, stz);
     integrateSymplecticEuler(motion, sx, sy, sz, stz, inverse_mass, inverse_inertia, sub_dt);
     s.panel_count = now.panel_count;
@@ -311,11 +319,16 @@ TIS_HD void subcycleStructureContact(int k, const ModelConstants& c, const CellS
   }
 }
 
-/// One step of cell k: gather, water, planes, symplectic Euler. `motion` is updated in place;
-/// `reference` is its state at the last contact rebuild.
-TIS_HD CellStepResult stepCell(int k, const ModelConstants& c, const CellStepInputs& in, double pusher_x,
-                               double pusher_velocity, double runaway_speed, const CellMotion& reference,
-                               CellMotion& motion, StructureContact& structure) {
+/// First half of a step of cell k: gather, water, pusher, walls and bottom. A cell that cannot
+/// reach the structure face within the step (every cell when structure_substeps = 1) also takes
+/// the face's force and its whole step here and returns false. One that can returns true with
+/// `held`, and its step is finished by subcycleStructureContact. The two halves are apart so
+/// that the CUDA backend can run the few sub-stepped cells in a pass of their own instead of
+/// letting each warp wait on its slowest cell; stepCell runs them back to back. `pusher_fx` gets
+/// the pusher's x force on the cell [N].
+TIS_HD bool beginCellStep(int k, const ModelConstants& c, const CellStepInputs& in, double pusher_x,
+                          double pusher_velocity, CellMotion& motion, StructureContact& structure,
+                          double& pusher_fx, HeldForces& held) {
   const CellMotion m = motion;
   double fx = 0.0, fy = 0.0, fz = 0.0, tz = 0.0;
   for (int e = in.bond_offsets[k]; e < in.bond_offsets[k + 1]; ++e) {
@@ -335,8 +348,7 @@ TIS_HD CellStepResult stepCell(int k, const ModelConstants& c, const CellStepInp
   const Vec2* poly = in.world + (size_t)k * kMaxPolygonVertices;
   const int n = in.vertex_count[k];
   const double* box = in.box + 4 * k;
-  CellStepResult r;
-  r.pusher_fx = addRigidPlaneForces(c, poly, n, box, m, mass, inertia, area, pusher_x, pusher_velocity, fx, fy, fz, tz);
+  pusher_fx = addRigidPlaneForces(c, poly, n, box, m, mass, inertia, area, pusher_x, pusher_velocity, fx, fy, fz, tz);
   const double z_low = m.z - 0.5 * c.contact.thickness;
   const double dt = c.time_step;
   // With sub-steps: a bound on how far any point of the cell can travel in this step [m], with
@@ -351,22 +363,41 @@ TIS_HD CellStepResult stepCell(int k, const ModelConstants& c, const CellStepInp
     travel = (speed + turn_rate * size) * dt;
   }
   if (c.structure_substeps > 1 && reachesStructure(c, box, z_low, travel)) {
-    subcycleStructureContact(k, c, in, travel, fx, fy, fz, tz, motion, structure);
-  } else {
-    structure.first_panel = 0;
-    structure.panel_count = 0;
-    int first, last;
-    if (reachesStructure(c, box, z_low, 0.0) && structurePanelRange(c, box[2], box[3], first, last)) {
-      addStructureForces(c, poly, n, m, mass, inertia, area, first, last, structure, fx, fy, fz, tz);
-    }
-    integrateSymplecticEuler(motion, fx, fy, fz, tz, inverse_mass, inverse_inertia, dt);
+    held = {fx, fy, fz, tz, travel};
+    return true;
   }
-  const CellMotion& a = motion;
+  structure.first_panel = 0;
+  structure.panel_count = 0;
+  int first, last;
+  if (reachesStructure(c, box, z_low, 0.0) && structurePanelRange(c, box[2], box[3], first, last)) {
+    addStructureForces(c, poly, n, m, mass, inertia, area, first, last, structure, fx, fy, fz, tz);
+  }
+  integrateSymplecticEuler(motion, fx, fy, fz, tz, inverse_mass, inverse_inertia, dt);
+  return false;
+}
+
+/// The end of a cell's step: the runaway guard and Algorithm 1's rebuild test (lines 14-16)
+/// against `reference`, the cell's state at the last contact rebuild.
+TIS_HD void judgeCellStep(const ModelConstants& c, double runaway_speed, const CellMotion& reference,
+                          const CellMotion& a, CellStepResult& r) {
   const double speed2 = a.vx * a.vx + a.vy * a.vy + a.vz * a.vz;
   r.blown = !isfinite(a.x + a.y + a.z + a.yaw) || !(speed2 < runaway_speed * runaway_speed);
   const double dx = a.x - reference.x, dy = a.y - reference.y;
   r.moved_far = dx * dx + dy * dy > c.rebuild_displacement * c.rebuild_displacement ||
                 fabs(a.yaw - reference.yaw) > c.rebuild_rotation;
+}
+
+/// One step of cell k: gather, water, planes, symplectic Euler. `motion` is updated in place;
+/// `reference` is its state at the last contact rebuild.
+TIS_HD CellStepResult stepCell(int k, const ModelConstants& c, const CellStepInputs& in, double pusher_x,
+                               double pusher_velocity, double runaway_speed, const CellMotion& reference,
+                               CellMotion& motion, StructureContact& structure) {
+  CellStepResult r;
+  HeldForces held;
+  if (beginCellStep(k, c, in, pusher_x, pusher_velocity, motion, structure, r.pusher_fx, held)) {
+    subcycleStructureContact(k, c, in, held, motion, structure);
+  }
+  judgeCellStep(c, runaway_speed, reference, motion, r);
   return r;
 }
 
