@@ -6,8 +6,8 @@ one run directory (every figure in the report comes from that one run on one mac
   rebuild_<N>.md      the same sheet with a contact rebuild at every step (Algorithm 1, N_iter = 1)
   kernels.json        thin_ice_bench_kernels (Google Benchmark JSON)
   liggghts.log        LIGGGHTS output of the 3-D DEM comparison, liggghts.json its set-up
-  tim_dem/summary.json  thin_ice_run on the same sheet for the same simulated time
-  rtf_<ID>/summary.json thin_ice_run of each validation scenario (real-time factor)
+  tim_dem/summary.json  `thin_ice run` on the same sheet for the same simulated time
+  rtf_<ID>/summary.json `thin_ice run` of each validation scenario (real-time factor)
   machine.json        machine, date, commands
 
   report.py --run DIR --out DIR

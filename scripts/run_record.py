@@ -1,5 +1,5 @@
 """The run record as the scripts read it: the mirror of include/thin_ice_sim/study/run_record.hpp,
-which owns the layout (thin_ice_run writes through it). test/test_run_record.py holds the two to
+which owns the layout (`thin_ice run` writes through it). test/test_run_record.py holds the two to
 each other, so a column renamed there and not here fails the tests."""
 import csv
 import json

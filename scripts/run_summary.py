@@ -1,7 +1,7 @@
-"""A thin_ice_run summary.json from Python: written again (scripts/recalibrate, scripts/reanalyse;
-the load statistics from thin_ice_analyse, the C++ code thin_ice_run uses, one layout, and files
-replaced only when whole), and the scenario it names read back with the run's overrides
-(scripts/validation_report.py, scripts/ice_layers)."""
+"""The summary.json of a `thin_ice run` from Python: written again (scripts/recalibrate,
+scripts/reanalyse; the load statistics from `thin_ice analyse`, the C++ code `thin_ice run` uses,
+one layout, and files replaced only when whole), and the scenario it names read back with the run's
+overrides (scripts/validation_report.py, scripts/ice_layers)."""
 import json
 import os
 import subprocess
@@ -11,39 +11,34 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILDS = (".ws/devel/lib/thin_ice_sim", ".ws/build_core_only/bin")  # catkin's, then plain CMake's
 
 
-def default_tool(caller, name):
-    """The command-line tool NAME (thin_ice_analyse, thin_ice_bond_offset) of the catkin build, else
-    of the plain CMake build, under .ws."""
+def default_tool(caller):
+    """The thin_ice program of the catkin build, else of the plain CMake build, under .ws (the
+    scripts' --tool when none is given)."""
     for folder in BUILDS:
-        path = os.path.join(ROOT, folder, name)
+        path = os.path.join(ROOT, folder, "thin_ice")
         if os.access(path, os.X_OK):
             return path
-    sys.exit(f"{caller}: no {name} under {' or '.join(BUILDS)}: build first, or give --tool")
-
-
-def default_analyse_tool(caller):
-    """thin_ice_analyse of the catkin build, else of the plain CMake build, under .ws."""
-    return default_tool(caller, "thin_ice_analyse")
+    sys.exit(f"{caller}: no thin_ice under {' or '.join(BUILDS)}: build first, or give --tool")
 
 
 def analyse(tool, run_dir):
-    """thin_ice_analyse's answer for RUN_DIR: summary.json's "load" and "experiment" objects worked
-    out from its loads.csv, and "scenario_calibration_factor", the alpha its scenario gives now
-    (None, with "scenario_error", when the scenario cannot be loaded). Run from the repository
-    root, where the runs' relative scenario paths start; raises RuntimeError with the tool's
-    message when it refuses the directory."""
+    """The answer of `thin_ice analyse RUN_DIR` (tool: the thin_ice program): summary.json's "load"
+    and "experiment" objects worked out from its loads.csv, and "scenario_calibration_factor", the
+    alpha its scenario gives now (None, with "scenario_error", when the scenario cannot be loaded).
+    Run from the repository root, where the runs' relative scenario paths start; raises
+    RuntimeError with the command's message when it refuses the directory."""
     # The tool's path is the caller's (relative to where the script was started), not ROOT's.
     try:
-        done = subprocess.run([os.path.abspath(tool), os.path.abspath(run_dir)], cwd=ROOT, stdout=subprocess.PIPE,
-                              stderr=subprocess.PIPE, text=True, timeout=600)
+        done = subprocess.run([os.path.abspath(tool), "analyse", os.path.abspath(run_dir)], cwd=ROOT,
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=600)
     except OSError as e:
         raise RuntimeError(f"cannot start {tool}: {e.strerror}") from e
     if done.returncode != 0:
-        raise RuntimeError(done.stderr.strip() or f"thin_ice_analyse exit status {done.returncode}")
+        raise RuntimeError(done.stderr.strip() or f"{tool} analyse: exit status {done.returncode}")
     try:
         return json.loads(done.stdout)
     except ValueError as e:
-        raise RuntimeError(f"{tool} did not answer in JSON ({e}): is it thin_ice_analyse?") from e
+        raise RuntimeError(f"{tool} analyse did not answer in JSON ({e}): is {tool} the thin_ice program?") from e
 
 
 def scenario_of_run(summary):
@@ -105,7 +100,7 @@ def _json(value, indent):
 
 
 def summary_text(summary):
-    """summary.json one key per line, with lists of numbers kept on one line as thin_ice_run has them."""
+    """summary.json one key per line, with lists of numbers kept on one line as `thin_ice run` has them."""
     return _json(summary, 0) + "\n"
 
 

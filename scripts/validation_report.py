@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Writes docs/validation.md from the validation runs that scripts/validate copied to
-docs/validation/RUN/ (summary.json and load.png of each thin_ice_run): a table in the layout of
+docs/validation/RUN/ (summary.json and load.png of each `thin_ice run`): a table in the layout of
 the paper's Table 6 with this project's numbers beside the experiment's, the seed spread, the
 resolution checks and the load plots. Only what the runs measured is reported; a series without
 a run is listed as not run. Three hand-written files in the runs folder are taken in as they are:
@@ -45,9 +45,9 @@ def load_runs(root):
             with open(path) as f:
                 summary = json.load(f)
         except ValueError as e:
-            fail(f"{path} is not JSON ({e}); allowed: a thin_ice_run summary.json")
+            fail(f"{path} is not JSON ({e}); allowed: a summary.json of `thin_ice run`")
         if not isinstance(summary, dict) or not isinstance(summary.get("load"), dict):
-            fail(f"{path} has no \"load\" object; allowed: a thin_ice_run summary.json")
+            fail(f"{path} has no \"load\" object; allowed: a summary.json of `thin_ice run`")
         runs[os.path.basename(os.path.dirname(path))] = summary
     return runs
 
@@ -55,7 +55,7 @@ def load_runs(root):
 def record(root, name, summary):
     """What a run's loads.csv says beyond its summary: the mean F_cal over the whole record [N],
     the broken bonds at the end, and the history itself (L, F_cal) for the comparison plots; with
-    the pushed length at the first broken bond [m] (None if none broke) as thin_ice_run's summary
+    the pushed length at the first broken bond [m] (None if none broke) as the summary of `thin_ice run`
     gives it."""
     path = os.path.join(root, name, "loads.csv")
     if not os.path.exists(path):
@@ -68,7 +68,7 @@ def record(root, name, summary):
                 loads.append(float(r["horizontal_calibrated_N"]))
                 broken = int(r["broken_bonds"])
             except (KeyError, TypeError, ValueError):
-                fail(f"{path}, line {number}: not a row of thin_ice_run's loads.csv (a missing column or a row "
+                fail(f"{path}, line {number}: not a row of the loads.csv of `thin_ice run` (a missing column or a row "
                      "cut short)")
     if not loads:
         return None

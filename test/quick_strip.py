@@ -1,7 +1,7 @@
-"""Shared by the Python tests of thin_ice_run and its tools: the quick strip (config/scenarios/quick.yaml
-cut to a 1 m strip 0.1 m from the structure, which meets the structure after about 0.27 s and
-breaks bonds by 0.4 s, within seconds of wall time), running a tool, and the check that a tool
-refuses bad input with one message naming it."""
+"""Shared by the Python tests of `thin_ice run` and the other commands: the quick strip
+(config/scenarios/quick.yaml cut to a 1 m strip 0.1 m from the structure, which meets the structure
+after about 0.27 s and breaks bonds by 0.4 s, within seconds of wall time), running a command, and
+the check that a command refuses bad input with one message naming it."""
 import os
 import subprocess
 import sys
@@ -11,11 +11,11 @@ STRIP_OVERRIDES = ["--set", "sheet.length=1.0", "--set", "structure.toe_x=1.1",
 
 
 def strip_scenario(source):
-    """thin_ice_run arguments that select the quick strip; source: the package's source folder."""
+    """`thin_ice run` arguments that select the quick strip; source: the package's source folder."""
     return ["--scenario", os.path.join(source, "config/scenarios/quick.yaml")] + STRIP_OVERRIDES
 
 
-def run_or_fail(cmd, what="thin_ice_run"):
+def run_or_fail(cmd, what="thin_ice run"):
     """Runs cmd; a non-zero exit ends the test with FAIL, the exit status and the tool's stderr."""
     done = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=300)
     if done.returncode != 0:

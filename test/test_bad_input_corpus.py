@@ -1,7 +1,8 @@
 #!/usr/bin/python3
-"""The project's corpus of bad input for thin_ice_run: the classes an outside tester tried
-(2026-12-04), written as cases generated from config/scenarios/quick.yaml and a list by hand.
-Each case asserts exit status 2, one error line (starting "thin_ice_run:", followed at most by
+"""The project's corpus of bad input for `thin_ice run` (and `thin_ice resume`): the classes an
+outside tester tried (2026-12-04), written as cases generated from config/scenarios/quick.yaml and a
+list by hand.
+Each case asserts exit status 2, one error line (starting "thin_ice run:", followed at most by
 the usage text) that names the key, file or argument at fault, and that nothing was written: the
 --out directory of a refused run does not exist afterwards, and a directory it may not touch is
 left byte for byte as it was.
@@ -14,7 +15,7 @@ that are no scenario (missing, a folder, a device, too large, binary, empty, two
 a list, a duplicate key, a required key missing, a quoted number); and command lines that ask for
 nothing sensible.
 
-    test_bad_input_corpus.py THIN_ICE_RUN SOURCE_DIR
+    test_bad_input_corpus.py THIN_ICE SOURCE_DIR   (THIN_ICE: the thin_ice program)
 """
 import hashlib
 import os
@@ -50,16 +51,17 @@ def file_digest(folder):
     return out
 
 
-def check(tool, args, needle, out_dir, untouched=None):
-    """None when thin_ice_run refused `args` as the corpus asks; otherwise what went wrong."""
+def check(command, args, needle, out_dir, untouched=None):
+    """None when `command` (thin_ice run or thin_ice resume) refused `args` as the corpus asks;
+    otherwise what went wrong."""
     before = file_digest(untouched) if untouched else None
     try:
-        done = subprocess.run([tool] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+        done = subprocess.run(command + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                               errors="replace", timeout=60)
     except subprocess.TimeoutExpired:
         return "did not end within 60 s"
     lines = done.stderr.strip().splitlines()
-    errors = [line for line in lines if line.startswith("thin_ice_run:")]
+    errors = [line for line in lines if line.startswith("thin_ice run:")]
     usage = lines[1:] if len(lines) > 1 else []
     if done.returncode != 2:
         return f"exit status {done.returncode} (expected 2), stderr {done.stderr.strip()[-300:]!r}"
@@ -77,7 +79,8 @@ def check(tool, args, needle, out_dir, untouched=None):
 
 
 def main():
-    tool, source = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+    thin_ice, source = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+    run = [thin_ice, "run"]
     quick = os.path.join(source, "config/scenarios/quick.yaml")
     with open(quick) as f:
         text = f.read()
@@ -87,10 +90,10 @@ def main():
         out = os.path.join(tmp, "out")
         base = ["--scenario", quick, "--until-time", "0.01", "--out", out]
 
-        def case(args, needle, untouched=None, out_dir=out):
+        def case(args, needle, untouched=None, out_dir=out, command=run):
             nonlocal count
             count += 1
-            problem = check(tool, args, needle, out_dir, untouched)
+            problem = check(command, args, needle, out_dir, untouched)
             if problem:
                 failures.append(f"{' '.join(a if len(a) < 60 else a[:57] + '...' for a in args)}: {problem}")
 
@@ -153,7 +156,7 @@ def main():
             case(["--scenario", path] + rest, needle)
         # 6. Command lines.
         run_dir = os.path.join(tmp, "a_run")
-        made = subprocess.run([tool, "--scenario", quick, "--until-time", "0.01", "--out", run_dir],
+        made = subprocess.run(run + ["--scenario", quick, "--until-time", "0.01", "--out", run_dir],
                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=120)
         if made.returncode != 0:
             failures.append(f"the run the command-line cases need: exit status {made.returncode}")
@@ -187,6 +190,13 @@ def main():
         case(["--resume", run_dir, "--until-time", "0.005"], "already at", untouched=run_dir, out_dir=None)
         case(["--resume", run_dir, "--until-time", "1", "--set", "sheet.length=2"], "sheet.length",
              untouched=run_dir, out_dir=None)
+        # `thin_ice resume DIR` is `thin_ice run --resume DIR`: the same refusals.
+        resume = [thin_ice, "resume"]
+        case([os.path.join(tmp, "nowhere"), "--until-time", "1"], "nowhere", command=resume)
+        case([run_dir, "--scenario", quick, "--until-time", "1"], "--resume", command=resume)
+        case([run_dir, "--until-time", "0.005"], "already at", untouched=run_dir, out_dir=None, command=resume)
+        case([run_dir, "--until-time", "1", "--set", "sheet.length=2"], "sheet.length", untouched=run_dir,
+             out_dir=None, command=resume)
     if count < MIN_CASES:
         failures.append(f"only {count} cases; the corpus is to hold at least {MIN_CASES}")
     if failures:

@@ -77,7 +77,7 @@ void expectSameRun(const Simulation& a, const Simulation& b, BackendKind backend
 TEST_P(EveryBackend, ARunSplitAtACheckpointFileGoesOnBitForBit) {
   // Stopped at 0.45 s, with the sheet against the face, 9 bonds broken and pairs in contact, so
   // that S_ref, the bond states and the pusher all have to come back; gone on to 1.3 s, past the
-  // next failure (between 1.1 and 1.2 s, 13 bonds: quick.yaml as shipped, thin_ice_run).
+  // next failure (between 1.1 and 1.2 s, 13 bonds: quick.yaml as shipped, `thin_ice run`).
   Simulation straight(strip(), GetParam());
   Simulation first_half(strip(), GetParam());
   straight.advance(0.45);

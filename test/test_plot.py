@@ -3,7 +3,7 @@
 says so), draws several runs into one picture with --out, and refuses bad input with one message
 naming it.
 
-    test_plot.py THIN_ICE_RUN SOURCE_DIR
+    test_plot.py THIN_ICE SOURCE_DIR   (THIN_ICE: the thin_ice program)
 """
 import json
 import os
@@ -14,14 +14,15 @@ from quick_strip import refusal_problem, run_or_fail, strip_scenario
 
 
 def main():
-    run_tool, source = sys.argv[1], sys.argv[2]
+    thin_ice, source = sys.argv[1], sys.argv[2]
+    run = [thin_ice, "run"]
     script = os.path.join(source, "scripts", "plot")
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
         whole, split = os.path.join(tmp, "whole"), os.path.join(tmp, "split")
-        run_or_fail([run_tool] + strip_scenario(source) + ["--until-time", "0.3", "--out", whole])
-        run_or_fail([run_tool] + strip_scenario(source) + ["--until-time", "0.2", "--out", split])
-        run_or_fail([run_tool, "--resume", split, "--until-time", "0.3"])
+        run_or_fail(run + strip_scenario(source) + ["--until-time", "0.3", "--out", whole])
+        run_or_fail(run + strip_scenario(source) + ["--until-time", "0.2", "--out", split])
+        run_or_fail([thin_ice, "resume", split, "--until-time", "0.3"])
         with open(os.path.join(split, "summary.json")) as f:
             resumed_at = json.load(f)["resumed_at_m"]
         if len(resumed_at) != 1:

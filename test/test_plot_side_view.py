@@ -2,7 +2,7 @@
 """scripts/plot_side_view draws a run's last snapshot (or a named one) and refuses bad input with
 one message naming it.
 
-    test_plot_side_view.py THIN_ICE_RUN SOURCE_DIR
+    test_plot_side_view.py THIN_ICE SOURCE_DIR   (THIN_ICE: the thin_ice program)
 """
 import os
 import sys
@@ -12,12 +12,12 @@ from quick_strip import refusal_problem, run_or_fail, strip_scenario
 
 
 def main():
-    run_tool, source = sys.argv[1], sys.argv[2]
+    thin_ice, source = sys.argv[1], sys.argv[2]
     script = os.path.join(source, "scripts", "plot_side_view")
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
         run = os.path.join(tmp, "run")
-        run_or_fail([run_tool] + strip_scenario(source) + ["--until-time", "0.4", "--snapshots", "2", "--out", run])
+        run_or_fail([thin_ice, "run"] + strip_scenario(source) + ["--until-time", "0.4", "--snapshots", "2", "--out", run])
         out = os.path.join(tmp, "side.png")
         done = run_or_fail([script, run, out], "plot_side_view")
         # The strip has 1 m x 1 m of 0.2 m cells in quick.yaml; its last snapshot is at t = 0.4 s.

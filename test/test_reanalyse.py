@@ -1,10 +1,10 @@
 #!/usr/bin/python3
-"""scripts/reanalyse with thin_ice_analyse against thin_ice_run's own summary: the statistics
+"""scripts/reanalyse with `thin_ice analyse` against the summary `thin_ice run` wrote: the statistics
 worked out again from a finished run's loads.csv must be those the run wrote at its end (to the
 nine digits of loads.csv), the first failure included, and scripts/steady_by_length's last row too; a summary whose statistics were spoiled
 gets them back; a directory that is not a finished run is refused and left alone.
 
-    test_reanalyse.py THIN_ICE_RUN THIN_ICE_ANALYSE SOURCE_DIR
+    test_reanalyse.py THIN_ICE SOURCE_DIR   (THIN_ICE: the thin_ice program)
 """
 import csv
 import json
@@ -26,11 +26,11 @@ def close(a, b):
 
 
 def main():
-    run_tool, analyse_tool, source = sys.argv[1:4]
+    thin_ice, source = sys.argv[1:3]
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
         run = os.path.join(tmp, "run")
-        run_or_fail([run_tool] + strip_scenario(source) + ["--until-time", "0.6", "--out", run])
+        run_or_fail([thin_ice, "run"] + strip_scenario(source) + ["--until-time", "0.6", "--out", run])
         path = os.path.join(run, "summary.json")
         original = json.load(open(path))
         if original["load"].get("first_failure_m") is None:
@@ -40,7 +40,7 @@ def main():
         spoiled["load"] = {"peak_N": 0.0}
         spoiled["experiment"] = None
         json.dump(spoiled, open(path, "w"))
-        reanalyse = [sys.executable, os.path.join(source, "scripts/reanalyse"), "--tool", analyse_tool,
+        reanalyse = [sys.executable, os.path.join(source, "scripts/reanalyse"), "--tool", thin_ice,
                      "--reason", "test"]
         done = subprocess.run(reanalyse + [run], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=120)
         if done.returncode != 0:
@@ -66,7 +66,7 @@ def main():
         end = original["pushed_length_m"]
         step = end / 3.0
         by_length = subprocess.run([sys.executable, os.path.join(source, "scripts/steady_by_length"), run,
-                                    "--step", repr(step), "--tool", analyse_tool],
+                                    "--step", repr(step), "--tool", thin_ice],
                                    stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=300)
         table = [line for line in by_length.stdout.splitlines() if line.startswith("| ") and line[2].isdigit()]
         if by_length.returncode != 0 or len(table) != 3:
@@ -87,7 +87,7 @@ def main():
                 failures.append(f"steady_by_length at {step:.3f} m: {cells[0]}, peak up to the cut {first_peak:.0f}")
 
         # A --tool that is not there: one message naming the key and the value, no traceback.
-        missing_tool = os.path.join(tmp, "no_such_thin_ice_analyse")
+        missing_tool = os.path.join(tmp, "no_such_thin_ice")
         refused = subprocess.run([sys.executable, os.path.join(source, "scripts/steady_by_length"), run,
                                   "--tool", missing_tool],
                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
@@ -109,7 +109,7 @@ def main():
             failures.append("a refused run was changed")
         # steady_by_length would otherwise cut the record of an earlier stop without a word.
         done = subprocess.run([sys.executable, os.path.join(source, "scripts/steady_by_length"), partial,
-                               "--tool", analyse_tool], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
+                               "--tool", thin_ice], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
         if done.returncode != 2 or "loads.csv.partial" not in done.stderr or "Traceback" in done.stderr:
             failures.append(f"steady_by_length on a run still writing: exit {done.returncode}, {done.stderr.strip()!r}")
     if failures:

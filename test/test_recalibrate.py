@@ -4,7 +4,7 @@
 the run's own --set of alpha wins over the scenario file; a run with a checkpoint goes only to the
 alpha a resumed run would write; bad input is refused whole.
 
-    test_recalibrate.py THIN_ICE_RUN THIN_ICE_ANALYSE SOURCE_DIR
+    test_recalibrate.py THIN_ICE SOURCE_DIR   (THIN_ICE: the thin_ice program)
 """
 import csv
 import json
@@ -20,8 +20,8 @@ STATISTICS = ("peak_N", "phase1_slope_N_per_m", "steady_mean_N", "steady_std_N")
 WINDOWS = ("peak_at_m", "first_failure_m", "steady_found", "steady_window_m", "steady_samples", "phase1_range_m")
 
 
-def run(run_tool, source, out, alpha):
-    run_or_fail([run_tool] + strip_scenario(source) +
+def run(thin_ice, source, out, alpha):
+    run_or_fail([thin_ice, "run"] + strip_scenario(source) +
                 ["--until-time", "0.6", "--set", f"structure.calibration_factor={alpha}", "--out", out])
 
 
@@ -30,8 +30,8 @@ def rows(path):
         return list(csv.DictReader(f))
 
 
-def tool(source, analyse_tool, *args):
-    return subprocess.run([sys.executable, os.path.join(source, "scripts/recalibrate"), "--tool", analyse_tool, *args],
+def tool(source, thin_ice, *args):
+    return subprocess.run([sys.executable, os.path.join(source, "scripts/recalibrate"), "--tool", thin_ice, *args],
                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
 
 
@@ -40,25 +40,25 @@ def relative(a, b):
 
 
 def main():
-    run_tool, analyse_tool, source = sys.argv[1:4]
+    thin_ice, source = sys.argv[1:3]
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
         low, high = os.path.join(tmp, "low"), os.path.join(tmp, "high")
-        run(run_tool, source, low, 0.63)
-        run(run_tool, source, high, 1.7)
+        run(thin_ice, source, low, 0.63)
+        run(thin_ice, source, high, 1.7)
         before = rows(os.path.join(low, "loads.csv"))
         if max(float(r["horizontal_raw_N"]) for r in before) < 10.0:
             sys.exit("FAIL: the strip never loaded the structure: the comparison would test nothing")
 
         # The run's own --set of alpha wins over the scenario file's value.
-        done = tool(source, analyse_tool, low)
+        done = tool(source, thin_ice, low)
         if done.returncode != 0 or "already at alpha = 0.63" not in done.stdout:
             failures.append(f"default alpha: expected the run's --set 0.63 to be kept, got {done.stdout!r}")
 
         # Bad alpha: refused with the value named, nothing written.
         summary_text = open(os.path.join(low, "summary.json")).read()
         for bad in ("0", "-1", "nan"):
-            done = tool(source, analyse_tool, low, "--alpha", bad)
+            done = tool(source, thin_ice, low, "--alpha", bad)
             if done.returncode != 2 or "alpha must be a finite number > 0" not in done.stderr:
                 failures.append(f"--alpha {bad}: exit {done.returncode}, {done.stderr.strip()!r}")
         if open(os.path.join(low, "summary.json")).read() != summary_text or rows(os.path.join(low, "loads.csv")) != before:
@@ -68,7 +68,7 @@ def main():
         partial = os.path.join(tmp, "partial")
         shutil.copytree(low, partial)
         open(os.path.join(partial, "loads.csv.partial"), "w").close()
-        if tool(source, analyse_tool, partial, "--alpha", "1.7").returncode != 2:
+        if tool(source, thin_ice, partial, "--alpha", "1.7").returncode != 2:
             failures.append("a directory with loads.csv.partial was not refused")
 
         # Without a --set of alpha the scenario file's value is taken (quick.yaml's, read here).
@@ -82,13 +82,13 @@ def main():
         import yaml
         alpha_file = float(yaml.safe_load(open(os.path.join(source, "config/scenarios/quick.yaml")))
                            ["structure"]["calibration_factor"])
-        done = tool(source, analyse_tool, from_file)
+        done = tool(source, thin_ice, from_file)
         got = json.load(open(path)).get("calibration_factor")
         if done.returncode != 0 or got != alpha_file:
             failures.append(f"alpha from the scenario file: {got} against quick.yaml's {alpha_file} ({done.stderr.strip()})")
 
         # A run that can be resumed goes only to the alpha its resumed rows would carry.
-        done = tool(source, analyse_tool, low, "--alpha", "1.7")
+        done = tool(source, thin_ice, low, "--alpha", "1.7")
         if done.returncode != 2 or "has a checkpoint" not in done.stderr:
             failures.append(f"--alpha 1.7 on a run with a checkpoint at 0.63: exit {done.returncode}, {done.stderr.strip()!r}")
         # ... and when its scenario cannot be loaded, the message says why --alpha is not enough.
@@ -98,14 +98,14 @@ def main():
         summary = json.load(open(path))
         summary["scenario"]["file"] = os.path.join(tmp, "no_such_scenario.yaml")
         json.dump(summary, open(path, "w"))
-        done = tool(source, analyse_tool, lost, "--alpha", "1.7")
+        done = tool(source, thin_ice, lost, "--alpha", "1.7")
         if done.returncode != 2 or "checkpoint.bin" not in done.stderr or "give --alpha" in done.stderr:
             failures.append(f"--alpha on a run with a checkpoint and no scenario: exit {done.returncode}, "
                             f"{done.stderr.strip()!r}")
         os.remove(os.path.join(low, "checkpoint.bin"))
 
         # 0.63 brought to 1.7 against the run made at 1.7.
-        done = tool(source, analyse_tool, low, "--alpha", "1.7")
+        done = tool(source, thin_ice, low, "--alpha", "1.7")
         if done.returncode != 0:
             failures.append(f"recalibrate 0.63 -> 1.7 failed: {done.stderr.strip()}")
         after, reference = rows(os.path.join(low, "loads.csv")), rows(os.path.join(high, "loads.csv"))

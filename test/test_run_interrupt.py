@@ -1,12 +1,12 @@
 #!/usr/bin/python3
-"""thin_ice_run stopped by SIGTERM keeps what it reached: exit status 4, loads.csv with the rows so
+"""`thin_ice run` stopped by SIGTERM keeps what it reached: exit status 4, loads.csv with the rows so
 far (no loads.csv.partial left), summary.json with status "interrupted" and the pushed length
 reached, a last snapshot of that state and a checkpoint to resume from. Three times: a SIGTERM
 sent once, the same sent twice 50 ms apart, and a wall budget of GNU timeout, which delivers its
 SIGTERM twice (to the command and to its process group): a repeat within 1 s is the same request,
 not a second one that kills.
 
-    test_run_interrupt.py THIN_ICE_RUN SOURCE_DIR
+    test_run_interrupt.py THIN_ICE SOURCE_DIR   (THIN_ICE: the thin_ice program)
 """
 import csv
 import json
@@ -18,13 +18,13 @@ import tempfile
 import time
 
 
-def stopped_run(run_tool, source, out, how):
+def stopped_run(thin_ice, source, out, how):
     """Starts quick.yaml pushed for 1000 s of simulated time (hours of stepping, so the signal
     always comes before the target), and stops it with SIGTERM once two rows are written: sent
     here once ("once"), twice 50 ms apart ("twice", what timeout may do), or by GNU timeout after
     3 s of wall time ("timeout")."""
     under_timeout = how == "timeout"
-    cmd = [run_tool, "--scenario", os.path.join(source, "config/scenarios/quick.yaml"), "--until-time", "1000",
+    cmd = [thin_ice, "run", "--scenario", os.path.join(source, "config/scenarios/quick.yaml"), "--until-time", "1000",
            # "twice": an interval of 0.2 s takes long enough (~0.1 s of wall) that the repeat comes
            # while the first request is still being honoured.
            "--output-interval", "0.2" if how == "twice" else "0.01", "--snapshots", "3", "--out", out]
@@ -51,10 +51,10 @@ def stopped_run(run_tool, source, out, how):
 
 
 def main():
-    run_tool, source = sys.argv[1], sys.argv[2]
+    thin_ice, source = sys.argv[1], sys.argv[2]
     for how in ("once", "twice", "timeout"):
         with tempfile.TemporaryDirectory() as out:
-            check(*stopped_run(run_tool, source, out, how), out, "SIGTERM " + how)
+            check(*stopped_run(thin_ice, source, out, how), out, "SIGTERM " + how)
 
 
 def check(proc, err, out, how):

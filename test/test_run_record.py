@@ -1,10 +1,10 @@
 #!/usr/bin/python3
 """The scripts' mirror of the run record (scripts/run_record.py) against its owner
-(include/thin_ice_sim/study/run_record.hpp) and against a record thin_ice_run writes: the same file
+(include/thin_ice_sim/study/run_record.hpp) and against a record `thin_ice run` writes: the same file
 names, columns and schema version, so that a column renamed on one side and not the other fails
 here rather than in a plot.
 
-    test_run_record.py THIN_ICE_RUN SOURCE_DIR
+    test_run_record.py THIN_ICE SOURCE_DIR   (THIN_ICE: the thin_ice program)
 """
 import csv
 import json
@@ -40,7 +40,7 @@ def cpp_names(header_text):
 
 
 def main():
-    run_tool, source = sys.argv[1], sys.argv[2]
+    thin_ice, source = sys.argv[1], sys.argv[2]
     sys.path.insert(0, os.path.join(source, "scripts"))
     import run_record
 
@@ -63,9 +63,9 @@ def main():
     if len(load_columns) != 9:  # the parse found the array (nine columns before the panels)
         failures.append(f"parsed {len(load_columns)} load columns from run_record.hpp, expected 9")
 
-    # A record as thin_ice_run writes it: quick.yaml (2 panels), two snapshots.
+    # A record as `thin_ice run` writes it: quick.yaml (2 panels), two snapshots.
     with tempfile.TemporaryDirectory() as out:
-        cmd = [run_tool, "--scenario", os.path.join(source, "config/scenarios/quick.yaml"), "--until-time", "0.02",
+        cmd = [thin_ice, "run", "--scenario", os.path.join(source, "config/scenarios/quick.yaml"), "--until-time", "0.02",
                "--snapshots", "2", "--out", out]
         done = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=300)
         if done.returncode != 0:

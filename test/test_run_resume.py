@@ -1,14 +1,15 @@
 #!/usr/bin/python3
-"""thin_ice_run --resume: a run stopped at t = 0.4 s and resumed to 0.8 s writes the same loads.csv,
-byte for byte, as the run made in one go, and a summary whose statistics cover the whole history;
-one stopped between rows (t = 0.41 s) writes the same rows again from the second row boundary on;
+"""`thin_ice run --resume` (and `thin_ice resume`, the same): a run stopped at t = 0.4 s and resumed
+to 0.8 s writes the same loads.csv, byte for byte, as the run made in one go, and a summary whose
+statistics cover the whole history; one stopped between rows (t = 0.41 s) writes the same rows
+again from the second row boundary on;
 the first failure, which starts phase 1, is found whether it lies before or after the resumption;
 an override given with --resume holds from the resumption on (rows before it unchanged, after it
 changed, the summary saying from which L) and stays through a later resumption; a directory that
 cannot be resumed, an override of a key a run under way cannot change, or a false bottom raised
 through the ice over it, is refused with exit status 2 and the directory left as it was.
 
-    test_run_resume.py THIN_ICE_RUN SOURCE_DIR
+    test_run_resume.py THIN_ICE SOURCE_DIR   (THIN_ICE: the thin_ice program)
 """
 import csv
 import json
@@ -24,14 +25,20 @@ import time
 from quick_strip import refusal_problem, strip_scenario
 
 
-def run(tool, args):
-    return subprocess.run([tool] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=600)
+def command(thin_ice, args):
+    """`thin_ice resume ARGS...` where `args` begin with "resume", else `thin_ice run ARGS`."""
+    return [thin_ice] + args if args[:1] == ["resume"] else [thin_ice, "run"] + args
 
 
-def stopped_early(tool, args, out):
-    """Runs thin_ice_run with `args`, sends SIGTERM once out/loads.csv.partial exists (or after 60
+def run(thin_ice, args):
+    return subprocess.run(command(thin_ice, args), stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                          timeout=600)
+
+
+def stopped_early(thin_ice, args, out):
+    """Runs `thin_ice run` with `args`, sends SIGTERM once out/loads.csv.partial exists (or after 60
     s), and returns its exit status and the summary it wrote ({} if none)."""
-    proc = subprocess.Popen([tool] + args, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+    proc = subprocess.Popen(command(thin_ice, args), stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
     deadline = time.monotonic() + 60
     while proc.poll() is None and time.monotonic() < deadline and \
             not os.path.exists(os.path.join(out, "loads.csv.partial")):
@@ -47,7 +54,7 @@ def stopped_early(tool, args, out):
 
 
 def main():
-    tool, source = sys.argv[1], sys.argv[2]
+    thin_ice, source = sys.argv[1], sys.argv[2]
     scenario = strip_scenario(source) + ["--output-interval", "0.02"]
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
@@ -55,7 +62,7 @@ def main():
             os.path.join(tmp, d) for d in ("whole", "split", "off_grid", "early", "switched", "floating", "no_bottom"))
         for args in (scenario + ["--until-time", "0.8", "--out", whole],
                      scenario + ["--until-time", "0.4", "--out", split],
-                     ["--resume", split, "--until-time", "0.8"],
+                     ["resume", split, "--until-time", "0.8"],  # the same as run --resume
                      scenario + ["--until-time", "0.2", "--out", early],  # before contact: no bond broken yet
                      ["--resume", early, "--until-time", "0.8"],
                      scenario + ["--until-time", "0.41", "--out", off_grid],
@@ -67,7 +74,7 @@ def main():
                      # the strip afloat over the false bottom (by 0.8 s it has ridden up the face)
                      scenario + ["--until-time", "0.25", "--snapshots", "1", "--out", floating],
                      scenario + ["--set", "bottom.enabled=false", "--until-time", "0.05", "--out", no_bottom]):
-            done = run(tool, args)
+            done = run(thin_ice, args)
             if done.returncode != 0:
                 sys.exit(f"FAIL: {' '.join(args)}: exit status {done.returncode}: {done.stderr.strip()}")
         with open(os.path.join(whole, "loads.csv")) as a, open(os.path.join(split, "loads.csv")) as b:
@@ -177,6 +184,8 @@ def main():
                  (["--resume", no_first_row, "--until-time", "1"], "row 1 (t = 0.04 s) comes 0.04 s after t = 0"),
                  (["--resume", no_middle_row, "--until-time", "1"], "row 10 (t = 0.22 s) comes 0.04 s after the row"),
                  (["--resume", no_checkpoint, "--until-time", "1"], "has no checkpoint.bin"),
+                 # `thin_ice resume DIR` refuses as `thin_ice run --resume DIR` does, in its words
+                 (["resume", no_checkpoint, "--until-time", "1"], "thin_ice run: " + no_checkpoint + " has no"),
                  (["--resume", elsewhere, "--until-time", "1"], "relative to the directory the run was started from"),
                  (scenario + ["--until-time", "1", "--out", tmp, "--accept-changed-scenario"], "with --resume DIR only"),
                  # a fresh run into a directory holding another would mix the two runs' files
@@ -189,14 +198,14 @@ def main():
                  (scenario + ["--until-length", "1.2", "--out", os.path.join(tmp, "far")],
                   "--until-length 1.2 m is beyond the pusher's travel: its face reaches the structure's toe after 1.1 m")]
         for args, expected in cases:
-            done = run(tool, args)
+            done = run(thin_ice, args)
             if done.returncode != 2 or expected not in done.stderr:
                 failures.append(f"{' '.join(args[-4:])}: exit status {done.returncode}, stderr {done.stderr.strip()!r}; "
                                 f"expected 2 and {expected!r}")
         # The time-step refusal: one line, and no smaller time step or more sub-steps offered.
         stiff = ["--resume", split, "--until-time", "1", "--set", "ice.youngs_modulus=2e10"]
-        problem = refusal_problem([tool] + stiff, "ice.youngs_modulus=2e10")
-        stderr = run(tool, stiff).stderr
+        problem = refusal_problem(command(thin_ice, stiff), "ice.youngs_modulus=2e10")
+        stderr = run(thin_ice, stiff).stderr
         if problem or "allowed: <=" in stderr or "structure_substeps >=" in stderr:
             failures.append(f"the unstable switch's refusal: {problem or stderr.strip()!r}")
         # The bottom's refusal counts the cells the bottom acts on (polygon past its start, x = 0.6 m)
@@ -209,13 +218,13 @@ def main():
             for cell in csv.DictReader(f):
                 xs = [float(v) for v in cell["polygon_xy_m"].split()[0::2]]
                 under += max(xs) > 0.6 and float(cell["z_m"]) - h / 2 < -0.01 - 1e-3 * h
-        shallow = run(tool, ["--resume", floating, "--until-time", "1", "--set", "bottom.depth=0.01"]).stderr
+        shallow = run(thin_ice, ["--resume", floating, "--until-time", "1", "--set", "bottom.depth=0.01"]).stderr
         if not (0 < under < 50) or f": {under} cells over the false bottom" not in shallow:
             failures.append(f"the bottom's refusal should count {under} of the strip's 50 cells: {shallow.strip()!r}")
         # ... and a deeper bottom is taken, and said so in summary.json.
         deeper = os.path.join(tmp, "deeper")
         shutil.copytree(floating, deeper)
-        done = run(tool, ["--resume", deeper, "--until-time", "0.3", "--set", "bottom.depth=0.5"])
+        done = run(thin_ice, ["--resume", deeper, "--until-time", "0.3", "--set", "bottom.depth=0.5"])
         if done.returncode != 0:
             failures.append(f"--set bottom.depth=0.5 with --resume: exit status {done.returncode}: {done.stderr.strip()}")
         else:
@@ -226,7 +235,7 @@ def main():
         # fresh run and a resumption alike; each is stopped by SIGTERM once it has begun its record.
         to_end = os.path.join(tmp, "to_end")
         for args in (scenario + ["--until-length", "end", "--out", to_end], ["--resume", to_end, "--until-length", "end"]):
-            code, summary = stopped_early(tool, args, to_end)
+            code, summary = stopped_early(thin_ice, args, to_end)
             if code != 4 or summary.get("status") != "interrupted" or summary.get("target") != {"pushed_length_m": 1.1}:
                 failures.append(f"{' '.join(args[-3:])}: exit status {code}, status {summary.get('status')}, target "
                                 f"{summary.get('target')}; expected 4, interrupted, {{'pushed_length_m': 1.1}}")
@@ -244,7 +253,7 @@ def main():
         blown = os.path.join(tmp, "blown")
         # (rows of 1 ms and a snapshot due at every row of the resumed segment: it blows up at
         # t = 0.206 s, after five of them were written)
-        done = run(tool, ["--scenario", scenario_copy] + strip_scenario(source)[2:] +
+        done = run(thin_ice, ["--scenario", scenario_copy] + strip_scenario(source)[2:] +
                    ["--until-time", "0.2", "--output-interval", "0.001", "--snapshots", "2", "--out", blown])
         if done.returncode != 0:
             failures.append(f"the run to blow up later: exit status {done.returncode}: {done.stderr.strip()}")
@@ -256,7 +265,7 @@ def main():
             with open(scenario_copy, "w") as f:
                 f.write(text)
             before = {d: contents(d) for d in (blown, os.path.join(blown, "snapshots"))}
-            done = run(tool, ["--resume", blown, "--accept-changed-scenario", "--until-time", "0.6", "--snapshots", "400"])
+            done = run(thin_ice, ["--resume", blown, "--accept-changed-scenario", "--until-time", "0.6", "--snapshots", "400"])
             after = {d: contents(d) for d in before}
             kept = {d: {f: v for f, v in after[d].items() if f != "unhealthy_segment.csv"} for d in after}
             if done.returncode != 3 or kept != before or "unhealthy_segment.csv" not in after[blown]:
@@ -268,13 +277,13 @@ def main():
         # unstable --set.
         for stiffen, extras, blamed in (
                 (True, ([], ["--set", "ice.friction_ice_ice=0.4"], ["--set", "ice.vertical_modulus=2e10"]),
-                 "thin_ice_run: the run's scenario as it reads now ("),
-                (False, (["--set", "ice.youngs_modulus=2e10"],), "thin_ice_run: --set 'ice.youngs_modulus=2e10' with")):
+                 "thin_ice run: the run's scenario as it reads now ("),
+                (False, (["--set", "ice.youngs_modulus=2e10"],), "thin_ice run: --set 'ice.youngs_modulus=2e10' with")):
             name = "stiffened" if stiffen else "retouched"
             scenario_file = os.path.join(tmp, f"quick_{name}.yaml")
             shutil.copy(os.path.join(source, "config/scenarios/quick.yaml"), scenario_file)
             changed = os.path.join(tmp, name)
-            done = run(tool, ["--scenario", scenario_file] + strip_scenario(source)[2:] +
+            done = run(thin_ice, ["--scenario", scenario_file] + strip_scenario(source)[2:] +
                        ["--until-time", "0.05", "--out", changed])
             if done.returncode != 0:
                 failures.append(f"the run to be {name}: exit status {done.returncode}: {done.stderr.strip()}")
@@ -286,7 +295,7 @@ def main():
                         else text + "# a comment added after the run\n")
             before = contents(changed)
             for extra in extras:
-                done = run(tool, ["--resume", changed, "--accept-changed-scenario", "--until-time", "0.1"] + extra)
+                done = run(thin_ice, ["--resume", changed, "--accept-changed-scenario", "--until-time", "0.1"] + extra)
                 last = (done.stderr.strip().splitlines() or [""])[-1]
                 innocent = stiffen and extra and "2e10" not in extra[-1]
                 if (done.returncode != 2 or not last.startswith(blamed) or "allowed: <=" in last or
@@ -296,7 +305,7 @@ def main():
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("OK: resumed runs identical to the run in one go (from the second row boundary after a short row); "
-          "an override switched on at a resumption; twenty-one bad requests refused with exit status 2, and a scenario file "
+          "an override switched on at a resumption; twenty-two bad requests refused with exit status 2, and a scenario file "
           "stiffened past the run's time step refused as that; a deeper false bottom taken")
 
 

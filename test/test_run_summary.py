@@ -1,9 +1,9 @@
 #!/usr/bin/python3
-"""thin_ice_run's summary.json records the structure and false-bottom geometry the run used, with
-the run's --set overrides applied, so that readers of a run need not re-read the scenario file,
-and the host instruction set the build was compiled for.
+"""The summary.json of `thin_ice run` records the structure and false-bottom geometry the run used,
+with the run's --set overrides applied, so that readers of a run need not re-read the scenario
+file, and the host instruction set the build was compiled for.
 
-    test_run_summary.py THIN_ICE_RUN SOURCE_DIR
+    test_run_summary.py THIN_ICE SOURCE_DIR   (THIN_ICE: the thin_ice program)
 """
 import json
 import os
@@ -13,11 +13,11 @@ import tempfile
 
 
 def main():
-    run_tool, source = sys.argv[1], sys.argv[2]
+    thin_ice, source = sys.argv[1], sys.argv[2]
     with tempfile.TemporaryDirectory() as out:
         # quick.yaml has toe_x 3.3 m, 60 deg, 1 m wide, 1 m high, 2 panels, bottom 0.25 m deep; three
         # of them overridden here, two left as the file gives them.
-        cmd = [run_tool, "--scenario", os.path.join(source, "config/scenarios/quick.yaml"), "--until-time", "0.02",
+        cmd = [thin_ice, "run", "--scenario", os.path.join(source, "config/scenarios/quick.yaml"), "--until-time", "0.02",
                "--set", "structure.angle_deg=45", "--set", "structure.toe_x=3.4", "--set", "bottom.depth=0.3",
                "--out", out]
         done = subprocess.run(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=300)

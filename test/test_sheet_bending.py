@@ -3,10 +3,10 @@
 toe): its curvature, steepest slope over 1 m windows, depth, the bond stress across that slope and
 the two thresholds are worked out here by hand, for an ice whose bonds no offset alone can break
 and for one whose bonds break at a slope; a short strip at the face and a floe are left out; bad
-input is named in one line. The thresholds come from thin_ice_bond_offset (the engine's bond law),
-so the hand-worked numbers check that tool as well.
+input is named in one line. The thresholds come from `thin_ice probe bond-offset` (the engine's
+bond law), so the hand-worked numbers check that probe as well.
 
-    test_sheet_bending.py THIN_ICE_BOND_OFFSET SOURCE_DIR
+    test_sheet_bending.py THIN_ICE SOURCE_DIR   (THIN_ICE: the thin_ice program)
 """
 import csv
 import json

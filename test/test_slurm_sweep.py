@@ -4,7 +4,7 @@ and munge; a private configuration, state and socket folder under .ws/slurm_test
 started by this test and stopped whatever happens):
 
   1. a matrix of three quick runs goes in as one job array; one task is requeued halfway (as a
-     preemption would: Slurm sends SIGTERM, thin_ice_run writes its record and checkpoint) and
+     preemption would: Slurm sends SIGTERM, `thin_ice run` writes its record and checkpoint) and
      resumes from its checkpoint; --collect copies the three records and rebuilds the report;
   2. the same matrix run here (--jobs 2) gives the same loads.csv, byte for byte: the requeued
      run lost nothing and repeated nothing;
@@ -15,7 +15,7 @@ started by this test and stopped whatever happens):
 Slurm holds a requeued job back ~2 minutes before it may start again; the test lifts that hold
 (scontrol update StartTime=now), as an administrator could.
 
-    test_slurm_sweep.py THIN_ICE_RUN_DIR SOURCE_DIR
+    test_slurm_sweep.py THIN_ICE_DIR SOURCE_DIR   (THIN_ICE_DIR: the folder of the thin_ice program)
 Exit status 77 (skipped) where the daemons are not installed or this is not root.
 """
 import json
@@ -258,7 +258,7 @@ def main():
         if sub.returncode != 0 or not job.isdigit() or not cluster.wait_for(job, 60):
             raise RuntimeError(f"the failing task: exit status {sub.returncode}, {sub.stderr.strip()[-300:]}")
         got = validate(source, "--collect", "--work", os.path.join(folder, "failing"), env=cluster.env)
-        expected = "quick: failed, exit status 2: thin_ice_run: "
+        expected = "quick: failed, exit status 2: thin_ice run: "
         if got.returncode != 1 or expected not in got.stderr or "numerics.time_step" not in got.stderr:
             failures.append(f"the failing task's --collect: exit status {got.returncode}, stderr {got.stderr.strip()!r}; "
                             f"expected 1 and {expected!r} naming numerics.time_step")

@@ -51,7 +51,7 @@ TEST_P(ValidationRegression, ShortM2StretchKeepsItsLoadStatistics) {
     load.push_back(sim.loads().horizontal_raw);  // alpha of Eq. (18) is output scaling only
     broken_bonds.push_back(sim.loads().broken_bonds);
   }
-  // As thin_ice_run analyses a run: phase 1 from the first broken bond.
+  // As `thin_ice run` analyses a run: phase 1 from the first broken bond.
   const LoadStatistics s =
       analyseLoadHistory(length, load, SteadyStateRule(), firstFailureLength(length, broken_bonds));
   const int broken = sim.loads().broken_bonds;

@@ -1,4 +1,4 @@
-// The OpenMP wait policy of the programs (thin_ice_run, thin_ice_bench, the ROS node): passive,
+// The OpenMP wait policy of the programs (`thin_ice run`, thin_ice_bench, the ROS node): passive,
 // unless the caller's environment sets one.
 //
 // Why: libgomp's default lets a thread that waits at the end of a parallel loop spin for a while

@@ -38,8 +38,8 @@ Scenario loadScenario(const std::string& path, const std::vector<std::string>& o
 /// `source`, for text that is not section.key=value or names no key of the scenario format.
 std::string overrideKey(const std::string& text, const std::string& source);
 
-/// Whether `key` ("section.key") may change at a resumption of a run under way (thin_ice_run
-/// --resume DIR --set): the laws and the contact planes' stiffness and friction may, the mesh, the
+/// Whether `key` ("section.key") may change at a resumption of a run under way (`thin_ice run
+/// --resume DIR --set`): the laws and the contact planes' stiffness and friction may, the mesh, the
 /// geometry, the time stepping and the calibration may not. The registry of keys marks them.
 bool switchableOnResume(const std::string& key);
 

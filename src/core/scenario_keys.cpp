@@ -115,7 +115,7 @@ template <class S>
 Field flag(S Params::*section, bool S::*member, const char* key) {
   return field(section, member, key, "true or false", viaYaml<bool>, false);
 }
-/// Marks a key that `thin_ice_run --resume DIR --set` may change under a run that is under way:
+/// Marks a key that `thin_ice run --resume DIR --set` may change under a run that is under way:
 /// the laws of the ice, the water and the rigid planes (stiffness, friction), the friction's
 /// regularisation, the thread count, and the depth of the false bottom (not in the paper, so the
 /// one piece of geometry whose effect on a grown pile is worth testing; the runner refuses a depth

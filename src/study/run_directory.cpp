@@ -25,7 +25,7 @@ std::vector<std::string> splitCsvLine(const std::string& line) {
 /// RUN/summary.json as a YAML node (JSON is YAML); throws std::runtime_error naming the file.
 YAML::Node loadSummary(const std::string& run_dir) {
   const std::string path = run_dir + "/" + run_record::kSummaryFile;
-  if (!std::ifstream(path)) throw std::runtime_error("no " + path + ": not a thin_ice_run output directory");
+  if (!std::ifstream(path)) throw std::runtime_error("no " + path + ": not a run directory of `thin_ice run`");
   try {
     return YAML::LoadFile(path);
   } catch (const YAML::Exception& e) {

@@ -1,4 +1,4 @@
-// Which overrides thin_ice_run --resume DIR --set ... may switch on under a run that is under way,
+// Which overrides `thin_ice run --resume DIR --set ...` may switch on under a run that is under way,
 // and the refusals of values that run cannot take (an unstable step, a bottom raised through its ice).
 #pragma once
 

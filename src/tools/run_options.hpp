@@ -1,6 +1,7 @@
-// thin_ice_run's command line: its usage text, the options it takes and their parsing. A bad
+// The command line of `thin_ice run`: its usage text, the options it takes and their parsing. A bad
 // command line is a UsageError (exit status 2, with the usage); the checks that need the built
-// model (--until-length end, the pusher's travel, step counts) are thin_ice_run.cpp's.
+// model (--until-length end, the pusher's travel, step counts) are run_command.cpp's. argv[0] is
+// the subcommand's name; `thin_ice resume DIR ...` reaches here as `run --resume DIR ...`.
 #pragma once
 
 #include <cmath>
@@ -15,13 +16,14 @@
 namespace thin_ice_tools {
 
 inline const char* kUsage =
-    "usage: thin_ice_run --scenario FILE [--set section.key=value]... "
+    "usage: thin_ice run --scenario FILE [--set section.key=value]... "
     "(--until-length L|end | --until-time T)\n"
     "                    [--backend cpu|cuda|auto] [--output-interval S] [--snapshots N] [--profiles]\n"
     "                    --out DIR\n"
-    "       thin_ice_run --resume DIR [--accept-changed-scenario] [--set section.key=value]...\n"
+    "       thin_ice run --resume DIR [--accept-changed-scenario] [--set section.key=value]...\n"
     "                    (--until-length L|end | --until-time T)\n"
-    "                    [--backend cpu|cuda|auto] [--snapshots N] [--profiles]\n";
+    "                    [--backend cpu|cuda|auto] [--snapshots N] [--profiles]\n"
+    "       thin_ice resume DIR ...  (the same as thin_ice run --resume DIR ...)\n";
 
 struct UsageError : std::runtime_error {  // bad command line: exit status 2 with the usage
   using std::runtime_error::runtime_error;

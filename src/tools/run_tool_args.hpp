@@ -1,7 +1,8 @@
-// The command line shared by the tools that analyse one finished thin_ice_run directory
-// (thin_ice_edge_balance, thin_ice_profiles):
-//   TOOL RUN_DIR [--accept-changed-scenario] [--NAME VALUE]...
+// The command line shared by the probes that analyse one finished run directory of `thin_ice run`
+// (`thin_ice probe edge-balance`, `thin_ice probe profiles`):
+//   thin_ice probe PROBE RUN_DIR [--accept-changed-scenario] [--NAME VALUE]...
 // and loading that run's scenario with loadRunScenario (thin_ice_sim/study/run_directory.hpp).
+// argv[0] is the probe's name; `tool` is what its messages begin with ("thin_ice probe PROBE").
 #pragma once
 
 #include <cstdio>

@@ -1,4 +1,4 @@
-// How thin_ice_run stops on SIGINT or SIGTERM: the handler only records the request; the stepping
+// How `thin_ice run` stops on SIGINT or SIGTERM: the handler only records the request; the stepping
 // loop looks at it after each output interval, finishes that interval and writes everything. A
 // second request ends the process at once, but a repeat within 1 s of the first is the same
 // request delivered twice (GNU timeout signals the command and then its own process group).

@@ -1,4 +1,4 @@
-// Reading back what thin_ice_run wrote (src/tools/thin_ice_run.cpp): the scenario of a run, its
+// Reading back what `thin_ice run` wrote (src/tools/run_command.cpp): the scenario of a run, its
 // snapshot list and the cells of one snapshot, for tools that analyse a finished run.
 #pragma once
 
@@ -21,14 +21,14 @@ std::vector<CsvRow> readCsv(const std::string& path);
 double csvNumber(const CsvRow& row, const std::string& column, const std::string& path);
 
 /// The scenario (file and overrides) named by RUN/summary.json, loaded anew. Relative scenario
-/// paths are taken from the current directory, as thin_ice_run was given them. Throws
+/// paths are taken from the current directory, as `thin_ice run` was given them. Throws
 /// std::runtime_error when RUN is not a run directory, or when the scenario's hash (of the file's
 /// text and the overrides) differs from the run's: its sheet and bonds may not be the run's.
 /// With accept_changed_file the hash is not checked (for a file whose comments alone changed,
 /// which the caller has checked); `warning` then says so.
 Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, std::string& warning);
 
-/// An override given when the run was resumed (thin_ice_run --resume DIR --set ...): it holds
+/// An override given when the run was resumed (`thin_ice run --resume DIR --set ...`): it holds
 /// from that pushed length on, the run before it went without.
 struct SwitchedOverride {
   std::string set;      ///< "section.key=value"

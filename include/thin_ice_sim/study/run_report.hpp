@@ -1,4 +1,4 @@
-// What thin_ice_run writes about a run's loads in summary.json, shared with thin_ice_analyse so
+// What `thin_ice run` writes about a run's loads in summary.json, shared with `thin_ice analyse` so
 // that a finished run's statistics can be worked out again with the same code: the experiment of
 // Table 6 that a series is compared with, and the "load" and "experiment" objects.
 #pragma once
@@ -41,7 +41,7 @@ std::string jsonString(const std::string& text);
 /// A JSON number with ten significant digits; NaN and infinity (which JSON lacks) become null.
 std::string jsonNumber(double value);
 
-/// summary.json's "load" object (no trailing newline), indented as thin_ice_run writes it:
+/// summary.json's "load" object (no trailing newline), indented as `thin_ice run` writes it:
 /// the statistics of F_cal against L and the first failure that starts phase 1 [m].
 std::string loadJson(const LoadStatistics& s, double first_failure_length);
 

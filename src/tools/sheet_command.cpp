@@ -1,6 +1,6 @@
-// thin_ice_sheet: generates a Voronoi ice sheet from a YAML file, writes its picture and polygon
+// `thin_ice sheet`: generates a Voronoi ice sheet from a YAML file, writes its picture and polygon
 // list, and prints its statistics.
-//   thin_ice_sheet --config config/sheet_demo.yaml --out DIR [--seed N]
+//   thin_ice sheet --config config/sheet_demo.yaml --out DIR [--seed N]
 #include <yaml-cpp/yaml.h>
 
 #include <chrono>
@@ -12,12 +12,13 @@
 #include <string>
 #include <sys/stat.h>
 
+#include "commands.hpp"
 #include "thin_ice_sim/ice_sheet.hpp"
 #include "thin_ice_sim/sheet_io.hpp"
 
 namespace {
 
-const char* kUsage = "usage: thin_ice_sheet --config FILE --out DIR [--seed N]\n";
+const char* kUsage = "usage: thin_ice sheet --config FILE --out DIR [--seed N]\n";
 
 struct DemoConfig {
   thin_ice::IceSheetSpec sheet;
@@ -72,16 +73,29 @@ DemoConfig loadConfig(const std::string& file) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int thin_ice::cli::sheetCommand(int argc, char** argv) {
   std::string config_path, out_dir;
   long long seed_override = -1;
   for (int k = 1; k < argc; ++k) {
     const std::string arg = argv[k];
+    if (arg == "--help" || arg == "-h") {  // as every other command: its usage on stdout
+      std::cout << kUsage;
+      return 0;
+    }
     if ((arg == "--config" || arg == "--out" || arg == "--seed") && k + 1 < argc) {
       const std::string value = argv[++k];
       if (arg == "--config") config_path = value;
       if (arg == "--out") out_dir = value;
-      if (arg == "--seed") seed_override = std::stoll(value);
+      if (arg == "--seed") {
+        // Decimal digits only, as the scenario's sheet.seed: "abc", "-1" or "1e3" is refused here.
+        const bool digits = !value.empty() && value.size() <= 18 &&
+                            value.find_first_not_of("0123456789") == std::string::npos;
+        if (!digits) {
+          std::cerr << "thin_ice sheet: --seed '" << value << "'; allowed: a whole number 0 to 10^18 - 1\n";
+          return 2;
+        }
+        seed_override = std::stoll(value);
+      }
     } else {
       std::cerr << kUsage;
       return 2;
@@ -120,7 +134,7 @@ int main(int argc, char** argv) {
     std::printf("  generated in          %.3f s\n", seconds);
     std::printf("wrote %s/sheet.svg and %s/cells.txt\n", out_dir.c_str(), out_dir.c_str());
   } catch (const std::exception& e) {
-    std::cerr << "thin_ice_sheet: " << e.what() << "\n";
+    std::cerr << "thin_ice sheet: " << e.what() << "\n";
     return 1;
   }
   return 0;

@@ -1,8 +1,8 @@
-// thin_ice_edge_balance: the vertical force balance of the sheet's front row in a run, snapshot by
-// snapshot (thin_ice_sim/study/front_row_balance.hpp), as a Markdown table beside the structure's
-// vertical load on the ice from loads.csv (the mean over that output interval).
-//   thin_ice_edge_balance RUN_DIR [--accept-changed-scenario]
-// RUN_DIR is a thin_ice_run output with --snapshots; its scenario is the one summary.json names
+// `thin_ice probe edge-balance`: the vertical force balance of the sheet's front row in a run,
+// snapshot by snapshot (thin_ice_sim/study/front_row_balance.hpp), as a Markdown table beside the
+// structure's vertical load on the ice from loads.csv (the mean over that output interval).
+//   thin_ice probe edge-balance RUN_DIR [--accept-changed-scenario]
+// RUN_DIR is the output of a `thin_ice run` with --snapshots; its scenario is the one summary.json names
 // (thin_ice_sim/study/run_directory.hpp: run from the directory the run was started in).
 // Exit status: 0 done; 2 bad arguments, run directory or scenario.
 #include <cmath>
@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "commands.hpp"
 #include "thin_ice_sim/study/front_row_balance.hpp"
 #include "thin_ice_sim/study/run_directory.hpp"
 #include "run_tool_args.hpp"
@@ -24,12 +25,12 @@ double shown(double v, int decimals) {
   return std::fabs(v) < half_unit ? 0.0 : v;
 }
 
+constexpr const char* kTool = "thin_ice probe edge-balance";
+
 }  // namespace
 
-constexpr const char* kTool = "thin_ice_edge_balance";
-
-int main(int argc, char** argv) {
-  const char* usage = "usage: thin_ice_edge_balance RUN_DIR [--accept-changed-scenario]\n";
+int thin_ice::cli::probeEdgeBalance(int argc, char** argv) {
+  const char* usage = "usage: thin_ice probe edge-balance RUN_DIR [--accept-changed-scenario]\n";
   thin_ice_tools::RunToolArgs args;
   const int status = thin_ice_tools::parseRunToolArgs(argc, argv, kTool, usage, {}, args);
   if (status >= 0) return status;
@@ -72,7 +73,7 @@ int main(int argc, char** argv) {
     }
     std::fputs(table.c_str(), stdout);
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "thin_ice_edge_balance: %s: %s\n", run.c_str(), e.what());
+    std::fprintf(stderr, "%s: %s: %s\n", kTool, run.c_str(), e.what());
     return 2;
   }
   return 0;

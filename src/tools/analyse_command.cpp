@@ -1,12 +1,12 @@
-// thin_ice_analyse: works out a finished run's load statistics again from its loads.csv, with the
-// code thin_ice_run uses at the end of a run (load_statistics.hpp, run_report.hpp), and prints
+// `thin_ice analyse`: works out a finished run's load statistics again from its loads.csv, with the
+// code `thin_ice run` uses at the end of a run (load_statistics.hpp, run_report.hpp), and prints
 // summary.json's "load" and "experiment" objects as one JSON object on stdout, with the alpha of
 // Eq. (18) that the run's scenario gives now ("scenario_calibration_factor"; the scenario file is
-// taken relative to the current directory, as thin_ice_run was given it). For runs made before a
+// taken relative to the current directory, as `thin_ice run` was given it). For runs made before a
 // change to the statistics or to alpha; scripts/reanalyse and scripts/recalibrate put the objects
 // into the run's summary.json.
-//   thin_ice_analyse RUN_DIR
-// Exit status: 0 done; 2 bad arguments, or RUN_DIR is not a finished thin_ice_run directory.
+//   thin_ice analyse RUN_DIR
+// Exit status: 0 done; 2 bad arguments, or RUN_DIR is not a finished run directory.
 #include <cstdio>
 #include <exception>
 #include <filesystem>
@@ -14,19 +14,20 @@
 #include <stdexcept>
 #include <string>
 
+#include "commands.hpp"
 #include "thin_ice_sim/study/load_statistics.hpp"
 #include "thin_ice_sim/study/run_directory.hpp"
 #include "thin_ice_sim/study/run_report.hpp"
 
-int main(int argc, char** argv) {
-  const std::string usage = "usage: thin_ice_analyse RUN_DIR\n";
+int thin_ice::cli::analyseCommand(int argc, char** argv) {
+  const std::string usage = "usage: thin_ice analyse RUN_DIR\n";
   const std::string first = argc > 1 ? argv[1] : "";
   if (argc == 2 && (first == "--help" || first == "-h")) {
     std::cout << usage;
     return 0;
   }
   if (argc != 2 || first.rfind("-", 0) == 0) {
-    std::cerr << "thin_ice_analyse: give one run directory\n" << usage;
+    std::cerr << "thin_ice analyse: give one run directory\n" << usage;
     return 2;
   }
   const std::string dir = argv[1];
@@ -58,7 +59,7 @@ int main(int argc, char** argv) {
               << "\n}\n";
     return 0;
   } catch (const std::exception& e) {
-    std::cerr << "thin_ice_analyse: " << dir << ": " << e.what() << "\n";
+    std::cerr << "thin_ice analyse: " << dir << ": " << e.what() << "\n";
     return 2;
   }
 }

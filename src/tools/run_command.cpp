@@ -1,8 +1,9 @@
-// thin_ice_run: runs one scenario offline and writes its load history, the paper's load
-// statistics (Section 5.1, Table 6) and optional cell snapshots (its command line: run_options.hpp).
-//   thin_ice_run --scenario FILE [--set section.key=value]... (--until-length L|end | --until-time T)
+// `thin_ice run` (and `thin_ice resume DIR`, the same as `thin_ice run --resume DIR`): runs one
+// scenario offline and writes its load history, the paper's load statistics (Section 5.1, Table 6)
+// and optional cell snapshots (its command line: run_options.hpp).
+//   thin_ice run --scenario FILE [--set section.key=value]... (--until-length L|end | --until-time T)
 //                [--backend cpu|cuda|auto] [--output-interval S] [--snapshots N] --out DIR
-//   thin_ice_run --resume DIR [--accept-changed-scenario] [--set section.key=value]...
+//   thin_ice run --resume DIR [--accept-changed-scenario] [--set section.key=value]...
 //                (--until-length L|end | --until-time T) [--backend cpu|cuda|auto] [--snapshots N] [--profiles]
 // Writes DIR/loads.csv (one row per output interval, through loads.csv.partial), DIR/summary.json,
 // DIR/checkpoint.bin (the state at the end, unless the run became unhealthy) and with --snapshots
@@ -48,10 +49,10 @@
 #include <string>
 #include <vector>
 
+#include "commands.hpp"
 #include "progress_line.hpp"
 #include "run_options.hpp"
 #include "stop_signal.hpp"
-#include "thin_ice_sim/openmp_wait_policy.hpp"
 #include "resume_switch.hpp"
 #include "thin_ice_sim/built_backends.hpp"
 #include "thin_ice_sim/checkpoint.hpp"
@@ -199,7 +200,7 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
       r.error = "pushed length stopped advancing at L = " + jsonNumber(pushed_before) + " m";
     }
     if (!r.error.empty()) {  // keep the rows so far; the state now is not worth a row
-      std::fprintf(stderr, "%sthin_ice_run: simulation stopped at t = %.6g s: %s\n",
+      std::fprintf(stderr, "%sthin_ice run: simulation stopped at t = %.6g s: %s\n",
                    ::isatty(STDERR_FILENO) ? "\n" : "", sim.time(), r.error.c_str());
       break;
     }
@@ -217,7 +218,7 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
     if (snapshotDue(fraction(), last_row)) segment_snapshots.push_back(writeSnapshot(sim, snapshot_dir, row));
   }
   if (r.interrupted_by != 0) {
-    std::fprintf(stderr, "thin_ice_run: stopped by signal %d at t = %.6g s, L = %.6g m; writing what was reached\n",
+    std::fprintf(stderr, "thin_ice run: stopped by signal %d at t = %.6g s, L = %.6g m; writing what was reached\n",
                  r.interrupted_by, sim.time(), sim.pushedLength());
   }
   r.wall = std::chrono::duration<double>(Clock::now() - start).count();
@@ -363,7 +364,7 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
     }
     std::string warning;
     thin_ice::Scenario loaded = thin_ice::loadRunScenario(dir, o.accept_changed_scenario, warning);
-    if (!warning.empty()) std::fprintf(stderr, "thin_ice_run: warning: %s\n", warning.c_str());
+    if (!warning.empty()) std::fprintf(stderr, "thin_ice run: warning: %s\n", warning.c_str());
     run_hash = loaded.hash;
     unswitched = loaded;
     if (!o.overrides.empty()) {  // switched on from here: after the run's own, so they win
@@ -377,12 +378,12 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
     }
     const std::string checkpoint_path = dir + "/" + thin_ice::run_record::kCheckpointFile;
     if (!std::filesystem::exists(checkpoint_path)) {
-      throw ResumeError(dir + " has no checkpoint.bin (thin_ice_run writes one at the end of every healthy run "
+      throw ResumeError(dir + " has no checkpoint.bin (`thin_ice run` writes one at the end of every healthy run "
                         "since 2026-12-01)");
     }
     checkpoint = thin_ice::readCheckpoint(checkpoint_path);
     if (!checkpoint.checksummed) {
-      std::fprintf(stderr, "thin_ice_run: warning: %s is of format 1 and carries no checksum: damage to it cannot be "
+      std::fprintf(stderr, "thin_ice run: warning: %s is of format 1 and carries no checksum: damage to it cannot be "
                    "told; the next one written is checksummed\n", checkpoint_path.c_str());
     }
     if (checkpoint.state.steps != summary.steps) {
@@ -424,7 +425,7 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
     const int panels = std::max(0, sim->params().structure.panels);
     const std::string header = loadsHeader(panels);
     if (cont.previous_csv.compare(0, header.size(), header) != 0) {
-      throw ResumeError(csv_path + ": its first line is not thin_ice_run's header for " + std::to_string(panels) +
+      throw ResumeError(csv_path + ": its first line is not the header `thin_ice run` writes for " + std::to_string(panels) +
                         " panels (" + header.substr(0, header.size() - 1) + ")");
     }
     if (cont.previous_csv.back() != '\n') throw ResumeError(csv_path + ": its last row is cut short (no line end)");
@@ -530,8 +531,9 @@ std::unique_ptr<Simulation> prepare(Options& o, Continuation& cont) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
-  thin_ice::restartWithPassiveOpenMpWaitUnlessSet(argv);
+// The OpenMP wait policy is set by thin_ice.cpp's main before it gets here: the restart needs the
+// program's whole command line, which this function no longer sees.
+int thin_ice::cli::runCommand(int argc, char** argv) {
   thin_ice::registerBuiltBackends();
   const Clock::time_point setup_start = Clock::now();
   Options options;
@@ -542,13 +544,13 @@ int main(int argc, char** argv) {
     if (options.help) return std::printf("%s", kUsage) < 0;
     sim = prepare(options, continuation);
   } catch (const UsageError& e) {
-    std::cerr << "thin_ice_run: " << e.what() << "\n" << kUsage;
+    std::cerr << "thin_ice run: " << e.what() << "\n" << kUsage;
     return 2;
   } catch (const ResumeError& e) {
-    std::cerr << "thin_ice_run: " << e.what() << "\n";
+    std::cerr << "thin_ice run: " << e.what() << "\n";
     return 2;
   } catch (const std::exception& e) {  // ScenarioError: 2; e.g. no CUDA device: 1
-    std::cerr << "thin_ice_run: " << e.what() << "\n";
+    std::cerr << "thin_ice run: " << e.what() << "\n";
     return dynamic_cast<const thin_ice::ScenarioError*>(&e) ? 2 : 1;
   }
   try {
@@ -558,7 +560,7 @@ int main(int argc, char** argv) {
     thin_ice_tools::stopOnSigintAndSigterm();
     const RunResult result = runSimulation(*sim, options, continuation);
     if (continuation.active && !result.error.empty()) {
-      std::fprintf(stderr, "thin_ice_run: the resumed segment became unhealthy; %s is left as it was (its rows are in "
+      std::fprintf(stderr, "thin_ice run: the resumed segment became unhealthy; %s is left as it was (its rows are in "
                    "unhealthy_segment.csv there)\n", options.out.c_str());
       return 3;
     }
@@ -578,7 +580,7 @@ int main(int argc, char** argv) {
     printReport(*sim, options, stats);
     return !result.error.empty() ? 3 : result.interrupted_by != 0 ? 4 : 0;
   } catch (const std::exception& e) {
-    std::cerr << "thin_ice_run: " << e.what() << "\n";
+    std::cerr << "thin_ice run: " << e.what() << "\n";
     return 1;
   }
 }

@@ -1,7 +1,7 @@
-// thin_ice_bond_offset: what the model's bond law makes of a slope of the sheet alone, for one
-// scenario, as JSON. The bond is the one of the scenario's sheet whose length d (centroid to
+// `thin_ice probe bond-offset`: what the model's bond law makes of a slope of the sheet alone, for
+// one scenario, as JSON. The bond is the one of the scenario's sheet whose length d (centroid to
 // centroid) is nearest the cell size; a slope s sets its two cells a height step dz = s d apart,
-// with no horizontal strain. The tool gives:
+// with no horizontal strain. The probe gives:
 //   - sigma_v / sigma_f at each slope asked for (Eq. 13's sigma_v, the bond law's bending stress), and
 //     whether the bond breaks there;
 //   - the largest sigma_v / sigma_f that any step 0 < dz < h gives it, and at which slope (above 1
@@ -14,7 +14,7 @@
 // scripts/sheet_bending reads it, so that the thresholds it sets the sheet's shape against are
 // the engine's own laws (thin_ice_sim/study/edge_check.hpp, physics/bond.hpp, water.hpp). The model is built without the time-step check: a stiffer ice asked about here need
 // not be one a run could step.
-//   thin_ice_bond_offset --scenario FILE [--set section.key=value]... [--slope S]...
+//   thin_ice probe bond-offset --scenario FILE [--set section.key=value]... [--slope S]...
 // Exit status: 0 done; 2 bad arguments or scenario.
 #include <cmath>
 #include <cstdio>
@@ -25,6 +25,7 @@
 #include <string>
 #include <vector>
 
+#include "commands.hpp"
 #include "thin_ice_sim/study/edge_check.hpp"
 #include "thin_ice_sim/physics/water.hpp"
 #include "thin_ice_sim/scenario.hpp"
@@ -32,7 +33,7 @@
 namespace {
 
 const char* kUsage =
-    "usage: thin_ice_bond_offset --scenario FILE [--set section.key=value]... [--slope S]...\n"
+    "usage: thin_ice probe bond-offset --scenario FILE [--set section.key=value]... [--slope S]...\n"
     "  S: a slope of the sheet across the bond [-] (height step over the bond's length)\n";
 
 /// Surface stress [Pa] of an elastic (Kirchhoff) plate per unit curvature [1/m]: sigma = 6 M / h^2
@@ -42,7 +43,7 @@ double plateStressPerCurvature(double youngs_modulus, double poisson_ratio, doub
 }
 
 int refuse(const std::string& message) {
-  std::fprintf(stderr, "thin_ice_bond_offset: %s\n", message.c_str());
+  std::fprintf(stderr, "thin_ice probe bond-offset: %s\n", message.c_str());
   return 2;
 }
 
@@ -60,7 +61,7 @@ std::string number(double value, const std::string& what) {
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int thin_ice::cli::probeBondOffset(int argc, char** argv) {
   std::string scenario_path;
   std::vector<std::string> overrides;
   std::vector<double> slopes;
