@@ -27,7 +27,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
-from png_output import save_png  # noqa: E402
+from thin_ice_study.png_output import save_png  # noqa: E402
 
 import device_results  # noqa: E402  (beside this file)
 
@@ -307,7 +307,7 @@ def rtf_section(run, lines):
                           f"{v.get('structure_substeps', 1)} | {v['pushed_length_m']:.2f} | {v['wall_time_s']:.0f} | "
                           f"{v['real_time_factor']:.3g} |")
     if validation:
-        lines += ["Whole validation runs on the CPU (docs/validation/, made by `scripts/validate`, not in this bench",
+        lines += ["Whole validation runs on the CPU (docs/validation/, made by `scripts/study validate`, not in this bench",
                   "run, on the same machine; a run that shared the machine with other work is slower):", "",
                   "| run | cells | dt [s] / structure sub-steps | pushed length [m] | wall [s] | real-time factor |",
                   "|---|---:|---:|---:|---:|---:|"] + validation + [""]

@@ -11,7 +11,7 @@ THIN_ICE_ROOT=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 THIN_ICE_WS="$THIN_ICE_ROOT/.ws"
 
 # One apt line: ROS 1 from Debian's own packages (no /opt/ros), the core's libraries, the tools
-# for plots and the headless rviz screenshot, and Slurm with munge for scripts/validate --slurm
+# for plots and the headless rviz screenshot, and Slurm with munge for scripts/study validate --slurm
 # (the test brings up its own one-node cluster; no daemon is started by the install).
 THIN_ICE_APT_PACKAGES="catkin ros-message-generation ros-message-runtime \
   libroscpp-dev ros-std-msgs libstd-msgs-dev ros-geometry-msgs libgeometry-msgs-dev \

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""scripts/ice_layers counts the cells under and over the sheet's level in a hand-made run folder
+"""scripts/study ice_layers counts the cells under and over the sheet's level in a hand-made run folder
 whose answer is worked out below (the sheet told apart from the broken ice by its bonded piece), applies the run's --set overrides, tables and draws two runs
 together, and names bad input in one line.
 
@@ -59,11 +59,11 @@ def make_run(folder, overrides, with_pieces=True):
 
 
 def run(script, args):
-    return subprocess.run([script] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
+    return subprocess.run(script + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
 
 
 def main():
-    script = os.path.join(sys.argv[1], "scripts", "ice_layers")
+    script = [os.path.join(sys.argv[1], "scripts", "study"), "ice_layers"]
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
         for name, overrides, expected in (("plain", [], EXPECTED_ROW),
@@ -108,14 +108,14 @@ def main():
                 failures.append(f"--earlier: CSV {lines}")
         with open(earlier_csv, "w") as f:
             f.write("run,pushed_length_m\nplain,0.1\n")
-        problem = refusal_problem([script, os.path.join(tmp, "plain"), "--earlier", earlier_csv], "--earlier")
+        problem = refusal_problem(script + [os.path.join(tmp, "plain"), "--earlier", earlier_csv], "--earlier")
         if problem:
             failures.append(f"--earlier with other columns: {problem}")
         bad = os.path.join(tmp, "bad")
         make_run(bad, ["water.density=800"])  # lighter than the ice: nothing floats
         for args, needle in (([os.path.join(tmp, "none")], "not a finished run"),
                              ([bad], "water.density 800")):
-            problem = refusal_problem([script] + args, needle)
+            problem = refusal_problem(script + args, needle)
             if problem:
                 failures.append(f"{args}: {problem}")
     if failures:

@@ -1,9 +1,9 @@
 #!/usr/bin/python3
-"""scripts/phase2_table.py, the table docs/validation.md leads with: hand-made strip and full-width
-runs of W-3 whose numbers are worked out here. A run recorded with alpha = 1 is rescaled to the
-paper's 0.63; a run without a steady window is shown as a tail mean and not judged; the seed spread
-and the strip-against-full-width check are taken over the span the runs share, with the same rule
-as scripts/strip_vs_full.
+"""scripts/thin_ice_study/phase2_table.py, the table docs/validation.md leads with: hand-made strip
+and full-width runs of W-3 whose numbers are worked out here. A run recorded with alpha = 1 is
+rescaled to the paper's 0.63; a run without a steady window is shown as a tail mean and not judged;
+the seed spread and the strip-against-full-width check are taken over the span the runs share, with
+the same rule as scripts/study strip_vs_full.
 
     test_phase2_table.py SOURCE_DIR
 """
@@ -31,7 +31,7 @@ def write_run(folder, width, alpha, length, steady, mean, peak, slope, raw, expe
 
 def main():
     sys.path.insert(0, os.path.join(sys.argv[1], "scripts"))
-    from phase2_table import phase2_table
+    from thin_ice_study.phase2_table import phase2_table
     strip_experiment = {"width_scale": 0.2, "steady_mean_N": 1720.0, "peak_N": 3158.0}  # W-3 x 0.2
     with tempfile.TemporaryDirectory() as root:
         # Seed 1, recorded with alpha = 1: alpha F per metre = 0.63 * 1600 / 2 = 504 N/m against 860

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""scripts/reanalyse with `thin_ice analyse` against the summary `thin_ice run` wrote: the statistics
+"""scripts/study reanalyse with `thin_ice analyse` against the summary `thin_ice run` wrote: the statistics
 worked out again from a finished run's loads.csv must be those the run wrote at its end (to the
-nine digits of loads.csv), the first failure included, and scripts/steady_by_length's last row too; a summary whose statistics were spoiled
+nine digits of loads.csv), the first failure included, and scripts/study steady_by_length's last row too; a summary whose statistics were spoiled
 gets them back; a directory that is not a finished run is refused and left alone.
 
     test_reanalyse.py THIN_ICE SOURCE_DIR   (THIN_ICE: the thin_ice program)
@@ -40,7 +40,7 @@ def main():
         spoiled["load"] = {"peak_N": 0.0}
         spoiled["experiment"] = None
         json.dump(spoiled, open(path, "w"))
-        reanalyse = [sys.executable, os.path.join(source, "scripts/reanalyse"), "--tool", thin_ice,
+        reanalyse = [sys.executable, os.path.join(source, "scripts/study"), "reanalyse", "--tool", thin_ice,
                      "--reason", "test"]
         done = subprocess.run(reanalyse + [run], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=120)
         if done.returncode != 0:
@@ -60,12 +60,12 @@ def main():
         if any(again.get(k) != original.get(k) for k in original if k not in ("load", "experiment")):
             failures.append("a part of summary.json other than load and experiment changed")
 
-        # scripts/steady_by_length: cuts at a third and two thirds of the record, then its end. The
+        # scripts/study steady_by_length: cuts at a third and two thirds of the record, then its end. The
         # end's row is the run's own verdict; a cut's peak is the largest F_cal up to the cut, read
         # here from loads.csv.
         end = original["pushed_length_m"]
         step = end / 3.0
-        by_length = subprocess.run([sys.executable, os.path.join(source, "scripts/steady_by_length"), run,
+        by_length = subprocess.run([sys.executable, os.path.join(source, "scripts/study"), "steady_by_length", run,
                                     "--step", repr(step), "--tool", thin_ice],
                                    stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=300)
         table = [line for line in by_length.stdout.splitlines() if line.startswith("| ") and line[2].isdigit()]
@@ -88,7 +88,7 @@ def main():
 
         # A --tool that is not there: one message naming the key and the value, no traceback.
         missing_tool = os.path.join(tmp, "no_such_thin_ice")
-        refused = subprocess.run([sys.executable, os.path.join(source, "scripts/steady_by_length"), run,
+        refused = subprocess.run([sys.executable, os.path.join(source, "scripts/study"), "steady_by_length", run,
                                   "--tool", missing_tool],
                                  stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
         if refused.returncode == 0 or "Traceback" in refused.stderr or missing_tool not in refused.stderr:
@@ -108,7 +108,7 @@ def main():
         if open(os.path.join(partial, "summary.json")).read() != before:
             failures.append("a refused run was changed")
         # steady_by_length would otherwise cut the record of an earlier stop without a word.
-        done = subprocess.run([sys.executable, os.path.join(source, "scripts/steady_by_length"), partial,
+        done = subprocess.run([sys.executable, os.path.join(source, "scripts/study"), "steady_by_length", partial,
                                "--tool", thin_ice], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
         if done.returncode != 2 or "loads.csv.partial" not in done.stderr or "Traceback" in done.stderr:
             failures.append(f"steady_by_length on a run still writing: exit {done.returncode}, {done.stderr.strip()!r}")

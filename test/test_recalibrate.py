@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""scripts/recalibrate against the independent answer: a run made at alpha = 0.63 and brought to
+"""scripts/study recalibrate against the independent answer: a run made at alpha = 0.63 and brought to
 1.7 must say what a run made at 1.7 says (loads.csv and the load statistics of summary.json);
 the run's own --set of alpha wins over the scenario file; a run with a checkpoint goes only to the
 alpha a resumed run would write; bad input is refused whole.
@@ -31,8 +31,8 @@ def rows(path):
 
 
 def tool(source, thin_ice, *args):
-    return subprocess.run([sys.executable, os.path.join(source, "scripts/recalibrate"), "--tool", thin_ice, *args],
-                          stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
+    return subprocess.run([sys.executable, os.path.join(source, "scripts/study"), "recalibrate", "--tool", thin_ice,
+                           *args], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=60)
 
 
 def relative(a, b):

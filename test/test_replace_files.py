@@ -1,6 +1,7 @@
 #!/usr/bin/python3
-"""scripts/run_summary.py's replace_files: the files are replaced together after all of them were
-written, and a failure while writing leaves the old files as they were and no .new file behind.
+"""scripts/thin_ice_study/run_summary.py's replace_files: the files are replaced together after all
+of them were written, and a failure while writing leaves the old files as they were and no .new
+file behind.
 
     test_replace_files.py SOURCE_DIR
 """
@@ -11,7 +12,7 @@ import tempfile
 
 def main():
     sys.path.insert(0, os.path.join(sys.argv[1], "scripts"))
-    from run_summary import replace_files
+    from thin_ice_study.run_summary import replace_files
 
     failures = []
     with tempfile.TemporaryDirectory() as d:

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The scripts' mirror of the run record (scripts/run_record.py) against its owner
+"""The scripts' mirror of the run record (scripts/thin_ice_study/run_record.py) against its owner
 (include/thin_ice_sim/study/run_record.hpp) and against a record `thin_ice run` writes: the same file
 names, columns and schema version, so that a column renamed on one side and not the other fails
 here rather than in a plot.
@@ -42,7 +42,7 @@ def cpp_names(header_text):
 def main():
     thin_ice, source = sys.argv[1], sys.argv[2]
     sys.path.insert(0, os.path.join(source, "scripts"))
-    import run_record
+    from thin_ice_study import run_record
 
     failures = []
 

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
-"""scripts/scenario_file.py reads a scenario's base chain as the C++ loader does: a file's keys over
-its base's, a cycle, an empty base or a file that is not a map refused, and every shipped series
-merged to the full set of sections with its own ice.
+"""scripts/thin_ice_study/scenario_file.py reads a scenario's base chain as the C++ loader does: a
+file's keys over its base's, a cycle, an empty base or a file that is not a map refused, and every
+shipped series merged to the full set of sections with its own ice.
 
     test_scenario_file.py SOURCE_DIR
 """
@@ -13,7 +13,7 @@ import tempfile
 def main():
     source = sys.argv[1]
     sys.path.insert(0, os.path.join(source, "scripts"))
-    import scenario_file
+    from thin_ice_study import scenario_file
 
     failures = []
     with tempfile.TemporaryDirectory() as tmp:

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""scripts/sheet_bending on a hand-made snapshot whose sheet is the parabola z = -A x^2 (x from the
+"""scripts/study sheet_bending on a hand-made snapshot whose sheet is the parabola z = -A x^2 (x from the
 toe): its curvature, steepest slope over 1 m windows, depth, the bond stress across that slope and
 the two thresholds are worked out here by hand, for an ice whose bonds no offset alone can break
 and for one whose bonds break at a slope; a short strip at the face and a floe are left out; bad
@@ -75,13 +75,13 @@ def write_run(folder, source, ice):
 
 def main():
     tool, source = sys.argv[1], sys.argv[2]
-    script = os.path.join(source, "scripts", "sheet_bending")
+    script = [os.path.join(source, "scripts", "study"), "sheet_bending"]
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
         for k, (ice, header, plate, expected) in enumerate(CASES):
             run = os.path.join(tmp, f"run{k}")
             write_run(run, source, ice)
-            done = subprocess.run([script, run, "--tool", tool], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+            done = subprocess.run(script + [run, "--tool", tool], stdout=subprocess.PIPE, stderr=subprocess.PIPE,
                                   text=True, timeout=120)
             if done.returncode != 0 or expected not in done.stdout.splitlines():
                 failures.append(f"case {k}: exit status {done.returncode}, expected {expected!r} in {done.stdout!r} "
@@ -93,7 +93,7 @@ def main():
                              ([run, "--reach", "1"], "--reach 1"),
                              ([run, "--tool", os.path.join(tmp, "none")], "cannot start")):
             args = args if "--tool" in args else args + ["--tool", tool]
-            problem = refusal_problem([script] + args, needle)
+            problem = refusal_problem(script + args, needle)
             if problem:
                 failures.append(f"{args}: {problem}")
     if failures:

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""scripts/validate --slurm on a real one-node Slurm cluster brought up here (Debian's slurm-wlm
+"""scripts/study validate --slurm on a real one-node Slurm cluster brought up here (Debian's slurm-wlm
 and munge; a private configuration, state and socket folder under .ws/slurm_test; the daemons
 started by this test and stopped whatever happens):
 
@@ -164,7 +164,7 @@ PartitionName=sweep Nodes=sweeptest Default=YES MaxTime=INFINITE State=UP
 
 
 def validate(source, *args, env):
-    return subprocess.run(["/usr/bin/python3", os.path.join(source, "scripts/validate")] + list(args),
+    return subprocess.run(["/usr/bin/python3", os.path.join(source, "scripts/study"), "validate"] + list(args),
                           stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, env=env, timeout=600)
 
 

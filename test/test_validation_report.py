@@ -1,6 +1,6 @@
 #!/usr/bin/python3
-"""scripts/validation_report.py judges issue #6's targets per ice type on the longest run of the type:
-hand-made summaries whose errors are chosen on either side of each tolerance (+-10 % steady mean,
+"""scripts/study validation_report judges issue #6's targets per ice type on the longest run of the
+type: hand-made summaries whose errors are chosen on either side of each tolerance (+-10 % steady mean,
 +-25 % peak and phase-1 slope) must come out met or missed as worked out here, a run without a
 steady window must not be judged on its tail mean, and weak against medium is the ratio of the
 two longest runs' steady means.
@@ -30,7 +30,7 @@ def write_run(root, name, kind, length, steady, mean, peak, slope):
 
 
 def main():
-    script = os.path.join(sys.argv[1], "scripts", "validation_report.py")
+    script = os.path.join(sys.argv[1], "scripts", "study")
     with tempfile.TemporaryDirectory() as tmp:
         runs = os.path.join(tmp, "runs")
         # Weak: the 0.5 m run is shorter, so W-3-long is judged. Steady mean +9 % (met), peak -26 %
@@ -55,7 +55,7 @@ def main():
         with open(os.path.join(runs, "calibration.md"), "w") as f:
             f.write("## Calibration notes, newest first\n\nthe notes\n")
         out = os.path.join(tmp, "validation.md")
-        done = subprocess.run([sys.executable, script, "--runs", runs, "--out", out],
+        done = subprocess.run([sys.executable, script, "validation_report", "--runs", runs, "--out", out],
                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=120)
         if done.returncode != 0:
             sys.exit(f"FAIL: exit status {done.returncode}: {done.stderr.strip()}")
@@ -95,7 +95,7 @@ def main():
             f.write("{\"load\": ")
         for runs, needle in ((os.path.join(tmp, "no_such"), "no such folder"), (empty, "holds no run"),
                              (broken, "is not JSON")):
-            done = subprocess.run([sys.executable, script, "--runs", runs, "--out", out],
+            done = subprocess.run([sys.executable, script, "validation_report", "--runs", runs, "--out", out],
                                   stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=120)
             if done.returncode != 2 or needle not in done.stderr or "Traceback" in done.stderr:
                 sys.exit(f"FAIL: --runs {runs}: exit status {done.returncode}, stderr {done.stderr.strip()!r}; "

@@ -3,8 +3,8 @@
 // summary.json's "load" and "experiment" objects as one JSON object on stdout, with the alpha of
 // Eq. (18) that the run's scenario gives now ("scenario_calibration_factor"; the scenario file is
 // taken relative to the current directory, as `thin_ice run` was given it). For runs made before a
-// change to the statistics or to alpha; scripts/reanalyse and scripts/recalibrate put the objects
-// into the run's summary.json.
+// change to the statistics or to alpha; scripts/study reanalyse and scripts/study recalibrate put
+// the objects into the run's summary.json.
 //   thin_ice analyse RUN_DIR
 // Exit status: 0 done; 2 bad arguments, or RUN_DIR is not a finished run directory.
 #include <cstdio>
@@ -44,7 +44,7 @@ int thin_ice::cli::analyseCommand(int argc, char** argv) {
     const thin_ice::LoadStatistics s =
         thin_ice::analyseLoadHistory(h.pushed_length, h.load, thin_ice::SteadyStateRule(), first_failure);
     // alpha of Eq. (18) that the run's scenario (file as it stands now, with the run's overrides)
-    // gives, for scripts/recalibrate; null, with the reason, when the scenario cannot be loaded.
+    // gives, for scripts/study recalibrate; null, with the reason, when the scenario cannot be loaded.
     std::string alpha = "null", scenario_error = "null";
     try {
       std::string changed;  // a changed file is what is asked for here: its alpha now

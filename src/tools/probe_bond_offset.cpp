@@ -11,7 +11,7 @@
 //   - the curvature at which an elastic plate of the ice's E, nu and h reaches sigma_f at its
 //     surface, sigma_f / (E h / (2 (1 - nu^2)));
 //   - the height at which a cell's centroid floats at rest.
-// scripts/sheet_bending reads it, so that the thresholds it sets the sheet's shape against are
+// scripts/study sheet_bending reads it, so that the thresholds it sets the sheet's shape against are
 // the engine's own laws (thin_ice_sim/study/edge_check.hpp, physics/bond.hpp, water.hpp). The model is built without the time-step check: a stiffer ice asked about here need
 // not be one a run could step.
 //   thin_ice probe bond-offset --scenario FILE [--set section.key=value]... [--slope S]...

@@ -1,6 +1,6 @@
 // The run record, owned here: what a run directory holds and how each file is laid out.
 // `thin_ice run` writes it through these names and functions, run_directory.cpp reads it back through
-// the same names, and the scripts read it through their mirror, scripts/run_record.py
+// the same names, and the scripts read it through their mirror, scripts/thin_ice_study/run_record.py
 // (test/test_run_record.py holds the mirror to this file).
 #pragma once
 

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Draws a cell snapshot of a run near the structure, seen from the side (x, z) and from above
 (x, y): every cell's centroid, blue in the pushed sheet (the largest piece held together by intact
 bonds), green in a smaller bonded piece (a floe), red when it has no bond left (a free block).
@@ -6,7 +5,7 @@ Snapshots written before 2026-12-02 have no piece sizes: there blue is any bonde
 floe. The side view shows what the rubble profiles (above the water only) do not: ice under the
 waterline and under the incoming sheet.
 
-usage: scripts/plot_side_view RUN_DIR OUT_PNG [--snapshot FILE] [--reach M]
+usage: scripts/study plot_side_view RUN_DIR OUT_PNG [--snapshot FILE] [--reach M]
   RUN_DIR     an output folder of `thin_ice run` with summary.json and snapshots/ (--snapshots N)
   --snapshot  a file in RUN_DIR/snapshots/ (default: the last one in snapshots/index.csv)
   --reach     how far in front of the toe to draw [m] (default 3.5)
@@ -23,13 +22,15 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from png_output import check_png_path, save_png  # noqa: E402
-from run_summary import sheet_size  # noqa: E402
+from .png_output import check_png_path, save_png  # noqa: E402
+from .run_summary import sheet_size  # noqa: E402
+
+PROG = "scripts/study plot_side_view"
+SUMMARY = "draws a run's snapshot near the structure, from the side and from above"
 
 
 def fail(message):
-    print(f"plot_side_view: {message}", file=sys.stderr)
+    print(f"{PROG}: {message}", file=sys.stderr)
     sys.exit(2)
 
 
@@ -44,22 +45,22 @@ def snapshot_entry(run, name=None):
     if name is not None:
         rows = [row for row in rows if row["file"] == name]
         if not rows:
-            sys.exit(f"plot_side_view: --snapshot {name} is not listed in {run}/snapshots/index.csv")
+            sys.exit(f"{PROG}: --snapshot {name} is not listed in {run}/snapshots/index.csv")
     if not rows:
-        sys.exit(f"plot_side_view: {run}/snapshots/index.csv lists no snapshot")
+        sys.exit(f"{PROG}: {run}/snapshots/index.csv lists no snapshot")
     return rows[-1]["file"], float(rows[-1]["pushed_length_m"])
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+def main(argv):
+    p = argparse.ArgumentParser(prog=PROG, description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("run")
     p.add_argument("out")
     p.add_argument("--snapshot")
     p.add_argument("--reach", type=float, default=3.5)
-    a = p.parse_args()
+    a = p.parse_args(argv)
     if not a.reach > 0:
         fail(f"--reach {a.reach}; allowed: a length > 0 [m]")
-    check_png_path("plot_side_view", "OUT_PNG", a.out)
+    check_png_path(PROG, "OUT_PNG", a.out)
     summary_path = os.path.join(a.run, "summary.json")
     try:
         with open(summary_path) as f:
@@ -70,7 +71,7 @@ def main():
     except ValueError as e:
         fail(f"{summary_path} is not JSON ({e})")
     if "structure" not in summary or "false_bottom" not in summary:
-        sys.exit(f"plot_side_view: {a.run}/summary.json has no structure or false_bottom geometry "
+        sys.exit(f"{PROG}: {a.run}/summary.json has no structure or false_bottom geometry "
                  "(written by `thin_ice run` since 2026-12-01); run the scenario again")
     # A run without the false bottom has "false_bottom": null: the side view then draws none.
     structure, bottom = summary["structure"], summary["false_bottom"]
@@ -118,7 +119,3 @@ def main():
     fig.tight_layout()
     save_png(fig, a.out, dpi=90)
     print(f"plot_side_view: wrote {a.out} ({name}, L = {length:.3f} m, {len(near)} cells drawn)")
-
-
-if __name__ == "__main__":
-    main()

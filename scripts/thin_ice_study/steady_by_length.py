@@ -1,10 +1,9 @@
-#!/usr/bin/python3
 """The steady-state rule's verdict on a run's record cut short at every STEP metres of pushed
 length, with the code `thin_ice run` uses at the end of a run (`thin_ice analyse` on a copy of the
 run holding only the samples up to the cut). It shows whether a run's verdict holds as the run goes on:
 a window found at one length that the load leaves later was a pause of phase 1, not phase 2.
 
-usage: scripts/steady_by_length RUN_DIR [--step S] [--from L] [--tool PATH]
+usage: scripts/study steady_by_length RUN_DIR [--step S] [--from L] [--tool PATH]
   --step  spacing of the cuts [m] (default 0.5); the run's own end is always the last row
   --from  first cut [m] (default: one step)
   --tool  the thin_ice program (default: the catkin build's, else the plain CMake build's)
@@ -18,13 +17,14 @@ import shutil
 import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from run_summary import analyse, default_tool  # noqa: E402
+from .run_summary import analyse, default_tool
+
+PROG = "scripts/study steady_by_length"
+SUMMARY = "the steady-state rule's verdict on a run's record cut short at every STEP metres"
 
 
 def fail(message):
-    print(f"steady_by_length: {message}", file=sys.stderr)
+    print(f"{PROG}: {message}", file=sys.stderr)
     sys.exit(2)
 
 
@@ -66,13 +66,13 @@ def verdict_rows(tool, run, step, first):
     return rows
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+def main(argv):
+    p = argparse.ArgumentParser(prog=PROG, description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("run", metavar="RUN_DIR")
     p.add_argument("--step", type=float, default=0.5)
     p.add_argument("--from", dest="first", type=float)
     p.add_argument("--tool")
-    a = p.parse_args()
+    a = p.parse_args(argv)
     if not a.step > 0:
         fail(f"--step {a.step:g}; allowed: a length > 0 m")
     first = a.step if a.first is None else a.first
@@ -83,7 +83,7 @@ def main():
     if os.path.exists(os.path.join(a.run, "loads.csv.partial")):
         fail(f"{a.run} is still being written (loads.csv.partial): its summary.json and loads.csv are of an "
              "earlier stop; allowed: a run that has stopped")
-    tool = a.tool or default_tool("steady_by_length")
+    tool = a.tool or default_tool(PROG)
     if not (os.path.isfile(tool) and os.access(tool, os.X_OK)):
         fail(f"--tool {tool} is not an executable file; allowed: the path of the thin_ice program")
     print(f"{os.path.basename(os.path.normpath(a.run))}: the steady-state rule on the record cut at each length")
@@ -98,6 +98,3 @@ def main():
         print(f"| {cut:.3f} | {'found' if load.get('steady_found') else 'none'} | {number(window[0], '.2f')}-"
               f"{number(window[1], '.2f')} | {number(mean)} | {error} | {number(load.get('peak_N'))} "
               f"| {number(load.get('phase1_slope_N_per_m'))} |")
-
-if __name__ == "__main__":
-    main()

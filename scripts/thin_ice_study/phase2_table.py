@@ -13,8 +13,8 @@ import json
 import os
 import re
 
-from experiments import PHASE1_SLOPE, PUSHED_LENGTH, per_metre
-from strip_loads import read_run, within_seed_spread
+from .experiments import PHASE1_SLOPE, PUSHED_LENGTH, per_metre
+from .strip_loads import read_run, within_seed_spread
 
 SERIES = ["W-1", "W-2", "W-3", "M-1", "M-2", "S-1", "S-2"]
 EXPERIMENT_LENGTH = PUSHED_LENGTH  # [m] Table 5, per series (config/experiments.yaml)

@@ -1,12 +1,11 @@
-#!/usr/bin/python3
 """Runs the validation matrix against the shallow-water experiments (paper Tables 4-6) and
 regenerates docs/validation.md: on this machine (set-up and build as scripts/demo, then the runs,
 a few at a time), or as one Slurm job array on a cluster.
 
-  scripts/validate [MATRIX OPTIONS] [--jobs N]                  run here, then collect
-  scripts/validate [MATRIX OPTIONS] --slurm [SBATCH OPTIONS...] submit one array task per run
-  scripts/validate --collect                                    copy the finished runs, report
-  scripts/validate --report-only                                only rebuild the report
+  scripts/study validate [MATRIX OPTIONS] [--jobs N]                  run here, then collect
+  scripts/study validate [MATRIX OPTIONS] --slurm [SBATCH OPTIONS...] submit one array task per run
+  scripts/study validate --collect                                    copy the finished runs, report
+  scripts/study validate --report-only                                only rebuild the report
 
 MATRIX OPTIONS
   --series ID       a scenario of config/scenarios (default: the seven series W-1 W-2 W-3 M-1 M-2
@@ -61,10 +60,13 @@ import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from validation_report import EXPERIMENT_LENGTH, SERIES  # noqa: E402
-import scenario_file  # noqa: E402
+from . import ROOT, scenario_file
+from .validation_report import EXPERIMENT_LENGTH, SERIES
+
+PROG = "scripts/study validate"
+SUMMARY = "runs the validation matrix (here, or as a Slurm job array) and regenerates docs/validation.md"
+# The entry point, for the tasks this runs in processes of their own and for the report and plots.
+STUDY = os.path.join(ROOT, "scripts", "study")
 
 DEFAULT_SLURM_WALL_BUDGET = 14400  # [s] a task's slice of wall time under Slurm before it requeues
 SLURM_TIME_MARGIN = 600  # [s] the array's --time beyond the wall budget: set-up and the last write
@@ -72,7 +74,7 @@ RECORD_FILES = ("summary.json", "load.png", "loads.csv", "profiles.csv")
 
 
 def fail(message):
-    print("scripts/validate: " + message, file=sys.stderr)
+    print(PROG + ": " + message, file=sys.stderr)
     sys.exit(2)
 
 
@@ -115,7 +117,7 @@ def parse_args(argv):
             i += 1
             continue
         if flag not in valued:
-            fail(f"unknown argument '{flag}'; see scripts/validate --help")
+            fail(f"unknown argument '{flag}'; see {PROG} --help")
         if i + 1 >= len(argv):
             fail(flag + " needs a value")
         value = argv[i + 1]
@@ -267,7 +269,7 @@ def read_sweep(sweep):
         with open(os.path.join(sweep, "sweep.json")) as f:
             return json.load(f)
     except (OSError, ValueError) as e:
-        fail(f"no sweep to read in {sweep} ({e}); run scripts/validate or scripts/validate --slurm first")
+        fail(f"no sweep to read in {sweep} ({e}); run {PROG} or {PROG} --slurm first")
 
 
 def sweep_runner(description):
@@ -373,7 +375,7 @@ def run_here(sweep, jobs):
     def one(index):
         say(f"{tasks[index]['name']}: {tasks[index]['series']} to L = {tasks[index]['length']} m "
             f"(log: {os.path.join(sweep, 'logs', tasks[index]['name'] + '.log')})")
-        code = subprocess.run([sys.executable, os.path.abspath(__file__), "--task", sweep, str(index)]).returncode
+        code = subprocess.run([sys.executable, STUDY, "validate", "--task", sweep, str(index)]).returncode
         say(f"{tasks[index]['name']}: exit status {code}")
 
     with ThreadPoolExecutor(max_workers=jobs) as pool:
@@ -387,7 +389,7 @@ def submit(o, sweep, sbatch_options):
     script = os.path.join(sweep, "array.sbatch")
     with open(script, "w") as f:
         f.write("#!/bin/bash\n"
-                "# One task per run of the validation matrix (written by scripts/validate --slurm).\n"
+                f"# One task per run of the validation matrix (written by {PROG} --slurm).\n"
                 "# Options given to sbatch on its command line win over these.\n"
                 "#SBATCH --job-name=thin_ice_validate\n"
                 f"#SBATCH --array=0-{len(tasks) - 1}\n"
@@ -397,7 +399,7 @@ def submit(o, sweep, sbatch_options):
                 f"#SBATCH --time={minutes}\n"
                 "#SBATCH --ntasks=1\n"
                 "#SBATCH --cpus-per-task=1\n"
-                f"exec /usr/bin/python3 {os.path.abspath(__file__)} --task {sweep} \"$SLURM_ARRAY_TASK_ID\"\n")
+                f"exec /usr/bin/python3 {STUDY} validate --task {sweep} \"$SLURM_ARRAY_TASK_ID\"\n")
     with open(os.path.join(sweep, "sweep.json")) as f:
         description = json.load(f)
     description["wall_budget_s"] = budget
@@ -409,7 +411,7 @@ def submit(o, sweep, sbatch_options):
         say(f"sbatch refused the array ({script}): {done.stderr.strip()}", sys.stderr)
         return 1
     job = done.stdout.strip().split(";")[0]
-    say(f"submitted {len(tasks)} tasks as job array {job}; when it is done: scripts/validate --collect"
+    say(f"submitted {len(tasks)} tasks as job array {job}; when it is done: {PROG} --collect"
         + ("" if o["work"] == os.path.join(ROOT, ".ws") else f" --work {o['work']}"), sys.stderr)
     print(job)
     return 0
@@ -452,7 +454,7 @@ def collect(sweep):
         if not (os.path.isfile(os.path.join(run_dir, "loads.csv")) and os.path.isfile(os.path.join(run_dir, "summary.json"))):
             say(f"{name}: no loads.csv and summary.json in {run_dir}: nothing copied", sys.stderr)
             continue
-        subprocess.run([os.path.join(ROOT, "scripts/plot"), run_dir], check=False)
+        subprocess.run([STUDY, "plot", run_dir], check=False)
         os.makedirs(record, exist_ok=True)
         # Each file copied beside its old one first and renamed over it: an interrupted copy leaves
         # the recorded file whole.
@@ -467,8 +469,7 @@ def collect(sweep):
 
 
 def write_report(records, report):
-    done = subprocess.run([sys.executable, os.path.join(ROOT, "scripts/validation_report.py"), "--runs", records,
-                           "--out", report])
+    done = subprocess.run([sys.executable, STUDY, "validation_report", "--runs", records, "--out", report])
     if done.returncode == 0:
         say("wrote " + report)
     return done.returncode
@@ -514,7 +515,3 @@ def main(argv):
     if failed or refused or unfinished:
         say(f"runs that ended early or were refused: {' '.join(refused + failed + unfinished)}", sys.stderr)
     return 1 if failed or refused or unfinished or code else 0
-
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))

@@ -1,7 +1,6 @@
-#!/usr/bin/python3
-"""Records the simulator's structure load from ROS as a run directory that scripts/plot reads.
+"""Records the simulator's structure load from ROS as a run directory that scripts/study plot reads.
 
-usage: scripts/record_loads OUT_DIR [--every SECONDS]
+usage: scripts/study record_loads OUT_DIR [--every SECONDS]
 Subscribes to structure/wrench and sim/status, prints a line every SECONDS of simulated time
 (default 0.1), writes OUT_DIR/loads.csv and OUT_DIR/summary.json when the simulator goes away
 (or on Ctrl-C). The wrench is the calibrated load (alpha of Eq. 18 applied by the node).
@@ -9,7 +8,6 @@ Subscribes to structure/wrench and sim/status, prints a line every SECONDS of si
 import argparse
 import json
 import os
-import sys
 import time
 
 import rospy
@@ -17,8 +15,10 @@ from geometry_msgs.msg import WrenchStamped
 
 from thin_ice_sim.msg import PanelLoads, SimStatus
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from run_summary import replace_files  # noqa: E402
+from .run_summary import replace_files
+
+PROG = "scripts/study record_loads"
+SUMMARY = "records the simulator's structure load from ROS as a run directory (the demo's recorder)"
 
 
 class Recorder:
@@ -88,13 +88,13 @@ def positive_seconds(text):
     return value
 
 
-def main():
-    parser = argparse.ArgumentParser(prog="scripts/record_loads",
+def main(argv):
+    parser = argparse.ArgumentParser(prog=PROG,
                                      description="Records the structure load from ROS as a run directory.")
     parser.add_argument("out_dir", metavar="OUT_DIR", help="where loads.csv and summary.json go")
     parser.add_argument("--every", type=positive_seconds, default=0.1, metavar="SECONDS",
                         help="[s] of simulated time between printed lines (default 0.1)")
-    args = parser.parse_args(rospy.myargv(sys.argv)[1:])
+    args = parser.parse_args(rospy.myargv(argv))  # without ROS remappings (name:=value)
     rospy.init_node("record_loads", anonymous=True)
     recorder = Recorder(args.out_dir, args.every)
     rospy.on_shutdown(recorder.write_once)
@@ -106,7 +106,3 @@ def main():
         if recorder.last_status_wall is not None and time.time() - recorder.last_status_wall > silence_limit:
             break
     recorder.write()
-
-
-if __name__ == "__main__":
-    main()

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Works out the load statistics of finished run directories of `thin_ice run` again, after a change
 to the statistics (load_statistics.hpp) or to the summary's "load" and "experiment" objects,
 without running the simulation again. `thin_ice analyse` computes them from the run's loads.csv
@@ -6,7 +5,7 @@ with the code `thin_ice run` uses at the end of a run; this script puts them int
 summary.json in place of the old ones and adds the date and the reason to its "reanalyses" list.
 Nothing else in the run changes.
 
-usage: scripts/reanalyse --reason TEXT RUN_DIR [RUN_DIR...] [--tool PATH]
+usage: scripts/study reanalyse --reason TEXT RUN_DIR [RUN_DIR...] [--tool PATH]
 
 --tool: the thin_ice program, whose `analyse` command is used (default: the catkin build's, else
 the plain CMake build's, under .ws). summary.json is written beside the old one and renamed over it. Exit status 2 when a
@@ -18,9 +17,11 @@ import json
 import os
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from run_summary import analyse, default_tool, replace_files, summary_text  # noqa: E402
+from .run_summary import analyse, default_tool, replace_files, summary_text
+
+PROG = "scripts/study reanalyse"
+SUMMARY = "works a finished run's load statistics out again (thin_ice analyse) after a change to them"
+
 
 def reanalyse(tool, run_dir, reason):
     """Returns a line saying what changed; raises RuntimeError, leaving the run as it was."""
@@ -37,22 +38,18 @@ def reanalyse(tool, run_dir, reason):
     return "statistics worked out again; changed: " + (", ".join(changed) if changed else "nothing")
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+def main(argv):
+    parser = argparse.ArgumentParser(prog=PROG, description=__doc__.split("\n\n")[0])
     parser.add_argument("run_dirs", nargs="+", metavar="RUN_DIR")
     parser.add_argument("--tool", help="path of the thin_ice program")
     parser.add_argument("--reason", required=True, help="what changed in the statistics, for the run's record")
-    args = parser.parse_args()
-    tool = args.tool or default_tool("scripts/reanalyse")
+    args = parser.parse_args(argv)
+    tool = args.tool or default_tool(PROG)
     status = 0
     for run_dir in args.run_dirs:
         try:
             print(f"{run_dir}: {reanalyse(tool, run_dir, args.reason)}")
         except (RuntimeError, OSError, ValueError, KeyError) as e:
-            print(f"scripts/reanalyse: {run_dir}: {e}", file=sys.stderr)
+            print(f"{PROG}: {run_dir}: {e}", file=sys.stderr)
             status = 2
     return status
-
-
-if __name__ == "__main__":
-    sys.exit(main())

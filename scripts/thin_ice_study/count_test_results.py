@@ -1,7 +1,6 @@
-#!/usr/bin/python3
 """Counts the test cases in a directory of JUnit XML files (gtest and rostest write these).
 
-usage: scripts/count_test_results DIR
+usage: scripts/study count_test_results DIR
 Prints "PASSED FAILED SKIPPED" (one test case counts once, whatever the XML nesting) and lists
 each failed case on stderr.
 """
@@ -9,10 +8,19 @@ import os
 import sys
 import xml.etree.ElementTree as ElementTree
 
+SUMMARY = "counts passed, failed and skipped test cases in a directory of JUnit XML files"
 
-def main():
+
+PROG = "scripts/study count_test_results"
+
+
+def main(argv):
+    if len(argv) != 1 or not os.path.isdir(argv[0]):
+        given = " ".join(argv) if argv else "nothing"
+        print(f"{PROG}: DIR {given}; allowed: one directory of JUnit XML files", file=sys.stderr)
+        return 2
     passed = failed = skipped = 0
-    for root, _, files in os.walk(sys.argv[1]):
+    for root, _, files in os.walk(argv[0]):
         for name in sorted(files):
             if not name.endswith(".xml"):
                 continue
@@ -33,7 +41,3 @@ def main():
                 else:
                     passed += 1
     print(passed, failed, skipped)
-
-
-if __name__ == "__main__":
-    main()

@@ -4,7 +4,9 @@ import os
 
 import yaml
 
-_PATH = os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "config", "experiments.yaml")
+from . import ROOT
+
+_PATH = os.path.join(ROOT, "config", "experiments.yaml")
 
 with open(_PATH) as _f:
     _DATA = yaml.safe_load(_f)

@@ -1,5 +1,4 @@
-#!/usr/bin/python3
-"""Writes docs/validation.md from the validation runs that scripts/validate copied to
+"""Writes docs/validation.md from the validation runs that scripts/study validate copied to
 docs/validation/RUN/ (summary.json and load.png of each `thin_ice run`): a table in the layout of
 the paper's Table 6 with this project's numbers beside the experiment's, the seed spread, the
 resolution checks and the load plots. Only what the runs measured is reported; a series without
@@ -10,7 +9,7 @@ procedure.md (the calibration procedure: where each value comes from, which seri
 predicted) after it. calibration.md, the dated notes (a journal, newest first), is linked at the
 end, after the load histories, not copied in.
 
-  validation_report.py --runs docs/validation --out docs/validation.md
+  scripts/study validation_report --runs docs/validation --out docs/validation.md
 """
 import argparse
 import csv
@@ -21,10 +20,12 @@ import os
 import re
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from png_output import save_png  # noqa: E402
-from phase2_table import phase2_table  # noqa: E402
-from experiments import ICE_TYPE, PAPER_TIM, PHASE1_SLOPE, PUSHED_LENGTH, STEADY_MEAN  # noqa: E402
+from .experiments import ICE_TYPE, PAPER_TIM, PHASE1_SLOPE, PUSHED_LENGTH, STEADY_MEAN
+from .phase2_table import phase2_table
+from .png_output import save_png
+
+PROG = "scripts/study validation_report"
+SUMMARY = "writes docs/validation.md from the validation runs in docs/validation/"
 
 SERIES = ["W-1", "W-2", "W-3", "M-1", "M-2", "S-1", "S-2"]
 EXPERIMENT_LENGTH = PUSHED_LENGTH  # [m] Table 5, per series (config/experiments.yaml)
@@ -34,7 +35,7 @@ TARGETS = ("steady-state mean within +-10 %, peak within +-25 %, phase-1 slope w
 
 def fail(message):
     """Bad input: one message, exit status 2, and the old report left as it was."""
-    print(f"validation_report: {message}", file=sys.stderr)
+    print(f"{PROG}: {message}", file=sys.stderr)
     sys.exit(2)
 
 
@@ -100,7 +101,7 @@ def compare_plot(root, sid, names, histories):
     resolution variants, on one set of axes."""
     plt = pyplot()
     if plt is None:
-        print(f"validation_report: no comparison plot for {sid}: matplotlib is missing")
+        print(f"{PROG}: no comparison plot for {sid}: matplotlib is missing")
         return None
     fig, ax = plt.subplots(figsize=(9, 4.5))
     for name in names:
@@ -160,7 +161,7 @@ def long_runs_section(root, entries, rel):
     weak-above-medium comparison window by window at equal L (between runs of the same model), and
     one plot (runs of another model than the scenarios' dotted)."""
     if not entries:
-        return ["## Long runs", "", "None yet (`scripts/validate --series ID --tag long --until-length L`).", ""]
+        return ["## Long runs", "", "None yet (`scripts/study validate --series ID --tag long --until-length L`).", ""]
     means = {e["label"]: window_means(e["history"], WINDOW_M) for e in entries}
     count = max(max(m) for m in means.values()) + 1
     header = " | ".join(f"{k * WINDOW_M:.1f}-{(k + 1) * WINDOW_M:.1f} m" for k in range(count))
@@ -227,9 +228,6 @@ def long_runs_section(root, entries, rel):
     return lines
 
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-
-
 def structure_of(summary):
     """The run's structure geometry (toe_x, angle_deg, width, height) and the false bottom's depth,
     as summary.json records them; None, with the reason, when they cannot be had."""
@@ -243,10 +241,10 @@ def structure_of(summary):
 
 def structure_from_scenario_file(summary):
     """For runs whose summary.json predates its "structure" section: the scenario file (relative to
-    the repository root as scripts/validate gives it) with the run's overrides applied
+    the repository root as scripts/study validate gives it) with the run's overrides applied
     (run_summary.scenario_of_run); None, with the reason, when the file cannot be read."""
     try:
-        from run_summary import scenario_of_run
+        from .run_summary import scenario_of_run
         scenario = scenario_of_run(summary)
         st = dict(scenario["structure"])
         st["bottom_depth"] = float((scenario.get("bottom") or {}).get("depth", 0.25))
@@ -264,11 +262,11 @@ def profile_plot(root, name, summary):
         return None
     st, why = structure_of(summary)
     if st is None:
-        print(f"validation_report: no profile plot for {name}: {why}")
+        print(f"{PROG}: no profile plot for {name}: {why}")
         return None
     plt = pyplot()
     if plt is None:
-        print(f"validation_report: no profile plot for {name}: matplotlib is missing")
+        print(f"{PROG}: no profile plot for {name}: matplotlib is missing")
         return None
     side, top = [], []
     with open(path, newline="") as f:
@@ -476,7 +474,7 @@ def seeds_and_resolution(root, runs, histories, rel, level="##"):
     lines = [f"{level} Spread from the Voronoi mesh alone (seeds)", ""]
     lines += (["| series | runs | F_p mean +- std [N] | mean F_cal over the record [N] | F_avg (tail mean where not steady) [N] "
                "| first broken bond at L [m] |", "|---|---:|---:|---:|---:|---:|"] + spread
-              if spread else ["Not run yet (`scripts/validate --series ID --seeds 2,3`)."])
+              if spread else ["Not run yet (`scripts/study validate --series ID --seeds 2,3`)."])
     unsteady = [n for n in runs if re.fullmatch(r"[WMS]-\d(-seed\d+)?", n) and not runs[n]["load"].get("steady_found")]
     if spread and unsteady:
         lines += ["", "Where a run has no steady state (" + ", ".join(sorted(unsteady)) + "), its F_avg above is the "
@@ -509,7 +507,7 @@ def seeds_and_resolution(root, runs, histories, rel, level="##"):
                "| series | variant | F_p | F_p at L [m] | first broken bond at L [m] | mean F_cal over the record "
                "| F_avg (tail mean where not steady) | broken bonds at the end |",
                "|---|---|---:|---:|---:|---:|---:|---:|"] + res
-              if res else ["Not run yet (`scripts/validate --series ID --resolution`)."])
+              if res else ["Not run yet (`scripts/study validate --series ID --resolution`)."])
     lines.append("")
     for sid in SERIES:
         names = sorted(n for n in runs if histories.get(n) and
@@ -535,17 +533,17 @@ def pile_lines(root, runs, names, rel, label=""):
     for name in names:
         if profile_plot(root, name, runs[name]):
             lines += [f"### {name}{label}", "", f"![{name} rubble profiles]({rel}/{name}/profiles.png)", ""]
-            # The ice under the water too, where a side view was drawn (scripts/plot_side_view).
+            # The ice under the water too, where a side view was drawn (scripts/study plot_side_view).
             if os.path.exists(os.path.join(root, name, "side_view.png")):
                 lines += [f"![{name} cells near the structure, from the side and from above]({rel}/{name}/side_view.png)", ""]
     return lines
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+def main(argv):
+    p = argparse.ArgumentParser(prog=PROG, description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("--runs", required=True)
     p.add_argument("--out", required=True)
-    a = p.parse_args()
+    a = p.parse_args(argv)
     if not os.path.isdir(a.runs):
         fail(f"--runs {a.runs}: no such folder; allowed: the folder of run folders (docs/validation)")
     if not a.out.endswith(".md") or not os.path.isdir(os.path.dirname(os.path.abspath(a.out))):
@@ -560,7 +558,7 @@ def main():
     archive, archive_rel = os.path.join(a.runs, ARCHIVE), f"{rel}/{ARCHIVE}"
     archived = load_runs(archive) if os.path.isdir(archive) else {}
     lines = ["# Validation against the shallow-water experiments", "",
-             "Regenerated by `scripts/validate` from the runs in docs/validation/ (each run's summary.json",
+             "Regenerated by `scripts/study validate` from the runs in docs/validation/ (each run's summary.json",
              "and load plot). Experiment: Lemström and Polojärvi's model-scale tests, paper Tables 4-6. Loads",
              f"are the calibrated horizontal load F_cal = alpha F (Eq. 18; {alpha_text(runs)}); a run on a structure",
              "narrower than the experiment's 10 m is compared per metre of width (the experiment's loads are",
@@ -618,12 +616,12 @@ def main():
     lines += (["The ice above the waterline at the end of each run: strong ice (S-1, S-2), as the paper's",
                "Fig. 15 asks, and the longest run of each ice type (of the earlier reading too, marked level_only).",
                "Heights are cell tops (z + h/2; cells do not tilt in this 2.5-D model); the top view bins by cell",
-               "centroid, so it is good to about a cell radius. Where a run has a side view (scripts/plot_side_view,",
+               "centroid, so it is good to about a cell radius. Where a run has a side view (scripts/study plot_side_view,",
                "from its last snapshot), it shows every cell near the structure, under the waterline as well.",
                ""] + pile if pile else ["No run with profiles.csv yet."])
     lines.append("")
 
-    # Where the broken ice went, counted per snapshot (scripts/ice_layers --plot / --csv).
+    # Where the broken ice went, counted per snapshot (scripts/study ice_layers --plot / --csv).
     layer_sections = []
     for root, root_rel, label in ((a.runs, rel, ""), (archive, archive_rel, f" ({ARCHIVE})")):
         if not os.path.isdir(root):
@@ -637,7 +635,7 @@ def main():
         lines += ["## Where the broken ice goes: under or over the sheet", "",
                   "Per snapshot, the broken ice more than h/2 under and over the sheet's floating level and the",
                   "sheet's own cells pressed down (the sheet: the largest piece held together by intact bonds),",
-                  "drawn by scripts/ice_layers. The runs and what they show: the calibration notes (linked at the end).", ""]
+                  "drawn by scripts/study ice_layers. The runs and what they show: the calibration notes (linked at the end).", ""]
         lines += layer_sections
 
     if archived:
@@ -666,7 +664,3 @@ def main():
     with open(path + ".partial", "w") as f:
         f.write("\n".join(lines))
     os.replace(path + ".partial", path)
-
-
-if __name__ == "__main__":
-    main()

@@ -1,13 +1,14 @@
-"""The summary.json of a `thin_ice run` from Python: written again (scripts/recalibrate,
-scripts/reanalyse; the load statistics from `thin_ice analyse`, the C++ code `thin_ice run` uses,
+"""The summary.json of a `thin_ice run` from Python: written again (scripts/study recalibrate,
+scripts/study reanalyse; the load statistics from `thin_ice analyse`, the C++ code `thin_ice run` uses,
 one layout, and files replaced only when whole), and the scenario it names read back with the run's
-overrides (scripts/validation_report.py, scripts/ice_layers)."""
+overrides (scripts/study validation_report, scripts/study ice_layers)."""
 import json
 import os
 import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+from . import ROOT
+
 BUILDS = (".ws/devel/lib/thin_ice_sim", ".ws/build_core_only/bin")  # catkin's, then plain CMake's
 
 
@@ -46,8 +47,7 @@ def scenario_of_run(summary):
     repository root unless absolute) as a dict, with the run's --set overrides applied: each
     "section.key=value" sets scenario[section][key], to a float where the value reads as one.
     Raises OSError, KeyError, TypeError or yaml.YAMLError where the file or a section is missing."""
-    sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-    import scenario_file
+    from . import scenario_file  # here, not at the top: the module's other users do without yaml
     path = summary["scenario"]["file"]
     path = path if os.path.isabs(path) else os.path.join(ROOT, path)
     scenario = scenario_file.load(path)

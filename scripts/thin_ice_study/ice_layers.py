@@ -1,13 +1,12 @@
-#!/usr/bin/python3
 """Counts, in every snapshot of a run, the ice that has left the sheet's level, and tells the
 pushed sheet apart from the broken ice: is the broken ice going under the sheet or on top of it,
 and is the sheet pressed down? A cell counts as below (above) when its centroid is more than h/2
 below (above) the level at which a cell floats at rest, z_rest = h/2 - (rho_i / rho_w) h
 (Archimedes; the model's cells do not tilt). The sheet is the largest piece held together by
 intact bonds (snapshot column piece_cells, written since 2026-12-02); every other cell is broken
-ice. The side view (scripts/plot_side_view) shows one snapshot; this gives the history as numbers.
+ice. The side view (scripts/study plot_side_view) shows one snapshot; this gives the history as numbers.
 
-usage: scripts/ice_layers RUN_DIR... [--earlier CSV] [--csv OUT] [--plot OUT_PNG]
+usage: scripts/study ice_layers RUN_DIR... [--earlier CSV] [--csv OUT] [--plot OUT_PNG]
   RUN_DIR  an output folder of `thin_ice run` with summary.json and snapshots/ (--snapshots N); h, rho_i
            and rho_w come from its scenario file (path in summary.json, relative to the repository
            root) with the run's --set overrides applied
@@ -32,8 +31,11 @@ import json
 import os
 import sys
 
-from png_output import check_png_path, save_png
-from run_summary import floating_level, sheet_size
+from .png_output import check_png_path, save_png
+from .run_summary import floating_level, sheet_size
+
+PROG = "scripts/study ice_layers"
+SUMMARY = "per snapshot, the broken ice under and over the sheet's level and the sheet pressed down"
 
 COLUMNS = ["run", "pushed_length_m", "cells_below", "sheet_cells_below", "cells_above", "sheet_cells_above",
            "free_blocks", "sheet_cells", "farthest_broken_below_from_toe_m", "sheet_nearest_to_toe_m"]
@@ -42,7 +44,7 @@ EARLIER_COLUMNS = COLUMNS[:-1]
 
 
 def fail(message):
-    sys.exit(f"ice_layers: {message}")
+    sys.exit(f"{PROG}: {message}")
 
 
 def layers(cells_csv, h, z_rest, toe_x):
@@ -208,15 +210,15 @@ def plot(tables, out):
     print(f"ice_layers: wrote {out}")
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+def main(argv):
+    p = argparse.ArgumentParser(prog=PROG, description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("runs", nargs="+", metavar="RUN_DIR")
     p.add_argument("--earlier")
     p.add_argument("--csv")
     p.add_argument("--plot")
-    a = p.parse_args()
+    a = p.parse_args(argv)
     if a.plot:
-        check_png_path("ice_layers", "--plot", a.plot)
+        check_png_path(PROG, "--plot", a.plot)
     earlier = read_earlier(a.earlier) if a.earlier else {}
     tables = []
     for run in a.runs:
@@ -237,7 +239,3 @@ def main():
         os.replace(a.csv + ".new", a.csv)
     if a.plot:
         plot(tables, a.plot)
-
-
-if __name__ == "__main__":
-    main()

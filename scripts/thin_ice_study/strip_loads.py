@@ -1,11 +1,8 @@
-"""A run's load record per metre of structure width, for the strip tools (scripts/strip_table,
-scripts/strip_vs_full): one reader and one set of window means."""
+"""A run's load record per metre of structure width, for the strip tools (scripts/study strip_table,
+scripts/study strip_vs_full): one reader and one set of window means."""
 import math
-import os
-import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import run_record  # noqa: E402
+from . import run_record
 
 
 def read_run(path):

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Runs a scenario on a narrow strip: the fast bench for the physics (issue #31).
 
 A full-width run (10 m sheet, structure and channel) advances 0.3-0.8 m of pushed ice per hour on
@@ -8,15 +7,15 @@ the toe, the false bottom's distance from the toe, the panels' width; the channe
 frictionless (a symmetry boundary: the strip is a slice of a wider sheet). The loads are then compared
 per metre of width (`thin_ice run` scales the experiment's figures to the structure's width).
 
-usage: scripts/strip SCENARIO --out DIR [--width W] [--length L] [--bin THIN_ICE]
-                     [--set section.key=value]... (--until-length L | --until-time T) [other
-                     `thin_ice run` arguments]
+usage: scripts/study strip SCENARIO --out DIR [--width W] [--length L] [--bin THIN_ICE]
+                           [--set section.key=value]... (--until-length L | --until-time T) [other
+                           `thin_ice run` arguments]
   --width   strip width [m] (default 2): sheet.width, structure.width, channel.width
   --length  sheet length [m] (default 10); structure.toe_x moves with the ice front
   --bin     the thin_ice program to use, whose `run` runs the strip (default: the catkin build's,
             else build/core's, else the device bundle's)
-scripts/strip --print-runner prints the thin_ice program it would use (for `thin_ice resume`).
-scripts/strip --resume-snapshots DIR UNTIL [the run's strip arguments] prints the --snapshots a
+scripts/study strip --print-runner prints the thin_ice program it would use (for `thin_ice resume`).
+scripts/study strip --resume-snapshots DIR UNTIL [the run's strip arguments] prints the --snapshots a
 resumption of DIR to UNTIL (a length [m] or `end`) takes to keep the spacing of the run's own
 --snapshots K over its --length: K x segment / length, at least 1; nothing without --snapshots.
 Every other argument goes to `thin_ice run` unchanged. The overrides are printed before the run
@@ -29,10 +28,11 @@ import sys
 
 import yaml
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-import run_record  # noqa: E402
-import scenario_file  # noqa: E402
+from . import ROOT, run_record, scenario_file
+
+PROG = "scripts/study strip"
+SUMMARY = "runs a scenario on a narrow strip (sheet, structure and channel cut in width): the fast bench"
+
 RUNNER_CANDIDATES = [  # the thin_ice program of each build, in order of preference
     os.path.join(ROOT, ".ws/devel/lib/thin_ice_sim/thin_ice"),
     os.path.join(ROOT, "build/core/bin/thin_ice"),
@@ -42,7 +42,7 @@ RUNNER_CANDIDATES = [  # the thin_ice program of each build, in order of prefere
 
 
 def fail(message):
-    print("scripts/strip: " + message, file=sys.stderr)
+    print(PROG + ": " + message, file=sys.stderr)
     sys.exit(2)
 
 
@@ -151,7 +151,3 @@ def main(argv):
     # The runner takes this process's place, so that a signal (a wall budget's SIGTERM) reaches it
     # and it writes what it reached.
     os.execv(runner, command)
-
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))

@@ -1,8 +1,7 @@
-#!/usr/bin/python3
-"""Tabulates strip runs (scripts/strip, scripts/strip_matrix) per metre of width, for comparing
+"""Tabulates strip runs (scripts/study strip, scripts/strip_matrix) per metre of width, for comparing
 readings of the paper (issue #31).
 
-usage: scripts/strip_table RUN_DIR... [--alpha A] [--window W] [--markdown]
+usage: scripts/study strip_table RUN_DIR... [--alpha A] [--window W] [--markdown]
   RUN_DIR     output folders of `thin_ice run` (loads.csv, summary.json, snapshots/)
   --alpha     the structure's calibration factor of Eq. (18) applied to the raw load (default 0.63,
               the paper's); the raw load is always shown beside it
@@ -21,9 +20,11 @@ import math
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from experiments import PEAK, STEADY_MEAN, per_metre  # noqa: E402
-from strip_loads import read_run, window_means  # noqa: E402
+from .experiments import PEAK, STEADY_MEAN, per_metre
+from .strip_loads import read_run, window_means
+
+PROG = "scripts/study strip_table"
+SUMMARY = "tabulates strip runs per metre of width: window means, peak, steady verdict, the sheet's front"
 
 # Table 6 (alpha = 0.63 applied) per metre of the experiments' structure [N/m]: steady mean, peak.
 EXPERIMENT_PER_METRE = {k: (per_metre(STEADY_MEAN[k]), per_metre(PEAK[k])) for k in STEADY_MEAN}
@@ -47,7 +48,7 @@ def front_distances(path, toe_x):
 
 
 def main(argv):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser = argparse.ArgumentParser(prog=PROG, description=__doc__.split("\n")[0])
     parser.add_argument("runs", nargs="+")
     parser.add_argument("--alpha", type=float, default=0.63)
     parser.add_argument("--window", type=float, default=0.5)
@@ -58,7 +59,7 @@ def main(argv):
                         help="one table row per run instead of the blocks")
     args = parser.parse_args(argv)
     if not (args.alpha > 0 and args.window > 0):
-        print("scripts/strip_table: --alpha and --window must be > 0", file=sys.stderr)
+        print(PROG + ": --alpha and --window must be > 0", file=sys.stderr)
         return 2
     if args.markdown:
         print("| run | L reached [m] | broken bonds | peak alpha F [N/m] | alpha F per %g m [N/m] |" % args.window)
@@ -115,7 +116,3 @@ def main(argv):
               % " ".join("%.2f@%.1f" % (d, l) for l, d in fronts))
         print()
     return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))

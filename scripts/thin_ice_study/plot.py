@@ -1,11 +1,10 @@
-#!/usr/bin/python3
 """Draws the horizontal ice load against pushed ice length of `thin_ice run` results, as the
 paper's Figures 10-12: the simulated calibrated load F_cal (blue), the experimental steady-state
 mean (green dashed) and peak (orange dashed) of Table 6 when the scenario has them, the
 model's steady-state window (shaded) with its mean (blue dotted), and the lengths at which the
 run was resumed from its checkpoint (grey dash-dotted; summary.json's resumed_at_m).
 
-usage: scripts/plot RUN_DIR [RUN_DIR...] [--out PNG]
+usage: scripts/study plot RUN_DIR [RUN_DIR...] [--out PNG]
 
 Reads RUN_DIR/loads.csv (or loads.csv.partial of a run still going) and RUN_DIR/summary.json.
 Without --out each run is drawn to RUN_DIR/load.png; with --out all runs go into one picture,
@@ -17,9 +16,11 @@ import os
 import sys
 import textwrap
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from png_output import check_png_path, save_png  # noqa: E402
-import run_record  # noqa: E402
+from . import run_record
+from .png_output import check_png_path, save_png
+
+PROG = "scripts/study plot"
+SUMMARY = "draws F_cal against pushed length of runs, with Table 6's lines and the steady window"
 
 try:
     import matplotlib
@@ -27,7 +28,7 @@ try:
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
 except ImportError:
-    sys.exit("scripts/plot needs matplotlib (Debian: apt-get install python3-matplotlib)")
+    sys.exit(f"{PROG} needs matplotlib (Debian: apt-get install python3-matplotlib)")
 
 BLUE, GREEN, ORANGE, GREY = "#1f77b4", "#2ca02c", "#ff7f0e", "0.45"
 
@@ -36,14 +37,14 @@ def read_run(run_dir):
     """Returns (L [m], F_cal [N], summary dict or None, note about the data)."""
     path = run_record.loads_path(run_dir)
     if path is None:
-        sys.exit(f"scripts/plot: {run_dir}: no loads.csv (is it the --out directory of a `thin_ice run`?)")
+        sys.exit(f"{PROG}: {run_dir}: no loads.csv (is it the --out directory of a `thin_ice run`?)")
     note = "partial" if path.endswith(".partial") else ""
     lengths, loads = [], []
     with open(path, newline="") as f:
         reader = csv.DictReader(f)
         missing = {"pushed_length_m", "horizontal_calibrated_N"} - set(reader.fieldnames or [])
         if missing:
-            sys.exit(f"scripts/plot: {path}: missing column(s) {', '.join(sorted(missing))}")
+            sys.exit(f"{PROG}: {path}: missing column(s) {', '.join(sorted(missing))}")
         for row in reader:
             try:
                 length, load = float(row["pushed_length_m"]), float(row["horizontal_calibrated_N"])
@@ -132,13 +133,13 @@ def draw(ax, run_dir, lengths, loads, summary, note):
     ax.legend(loc="upper center", bbox_to_anchor=(0.5, -0.13), ncol=3, fontsize=8, frameon=False)
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+def main(argv):
+    parser = argparse.ArgumentParser(prog=PROG, description=__doc__.split("\n\n")[0])
     parser.add_argument("run_dirs", nargs="+", metavar="RUN_DIR")
     parser.add_argument("--out", metavar="PNG", help="one picture for all runs")
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     if args.out:
-        check_png_path("scripts/plot", "--out", args.out)
+        check_png_path(PROG, "--out", args.out)
     runs = [(d, *read_run(d)) for d in args.run_dirs]
     if args.out:
         groups = [(args.out, runs)]
@@ -154,7 +155,3 @@ def main():
         resumed = [f"{run[0]} resumed at L = " + ", ".join(f"{v:g}" for v in resumptions(run[3])) + " m"
                    for run in group if resumptions(run[3])]
         print(f"wrote {out}" + (f" ({'; '.join(resumed)})" if resumed else ""))
-
-
-if __name__ == "__main__":
-    main()

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """How far the intact sheet is pressed down in front of the structure, and whether the model's bond
 law could break it there, per snapshot of a run.
 
@@ -21,7 +20,7 @@ overrides (`thin_ice probe bond-offset`, so that nothing here restates a law):
     kappa_break = 2 (1 - nu^2) sigma_f / (E h).
 A sheet bent past kappa_break would break as a plate and does not in the model.
 
-usage: scripts/sheet_bending RUN_DIR [--window M] [--reach M] [--every K] [--tool PATH]
+usage: scripts/study sheet_bending RUN_DIR [--window M] [--reach M] [--every K] [--tool PATH]
   RUN_DIR  a folder of `thin_ice run` with summary.json and snapshots/ (--snapshots N)
   --window length of the slope windows [m] (default 1.0; curvature windows are twice as long)
   --reach  how far in front of the structure's toe the profile is taken [m] (default 6)
@@ -40,11 +39,15 @@ import sys
 
 import numpy as np
 
-from run_summary import ROOT, default_tool, scenario_of_run, sheet_size
+from . import ROOT
+from .run_summary import default_tool, scenario_of_run, sheet_size
+
+PROG = "scripts/study sheet_bending"
+SUMMARY = "the intact sheet in front of the structure: its depth, slope and curvature against what breaks it"
 
 
 def fail(message):
-    print(f"sheet_bending: {message}", file=sys.stderr)
+    print(f"{PROG}: {message}", file=sys.stderr)
     sys.exit(2)
 
 
@@ -129,21 +132,21 @@ def profile_row(cells_csv, toe_x, reach, window, strip):
     return lowest, steepest, curviest
 
 
-def main():
-    p = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+def main(argv):
+    p = argparse.ArgumentParser(prog=PROG, description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("run", metavar="RUN_DIR")
     p.add_argument("--window", type=float, default=1.0)
     p.add_argument("--reach", type=float, default=6.0)
     p.add_argument("--every", type=int, default=1)
     p.add_argument("--tool", help="path of the thin_ice program")
-    a = p.parse_args()
+    a = p.parse_args(argv)
     if not a.window > 0:
         fail(f"--window {a.window:g}; allowed: a length > 0 m")
     if not a.reach > 2 * a.window:
         fail(f"--reach {a.reach:g}; allowed: a length > twice --window ({2 * a.window:g} m)")
     if a.every < 1:
         fail(f"--every {a.every}; allowed: a whole number >= 1")
-    tool = a.tool or default_tool("sheet_bending")
+    tool = a.tool or default_tool(PROG)
     try:
         with open(os.path.join(a.run, "summary.json")) as f:
             summary = json.load(f)
@@ -191,7 +194,3 @@ def main():
         curvature_text = (f"{curvature[0]:.4f} (+- {curvature[1]:.4f}) | {curvature[0] / curvature_break:.1f}"
                           if curvature is not None else "- | -")
         print(f"| {length:.3f} | {depth:.3f} | {slope_text} | {curvature_text} |")
-
-
-if __name__ == "__main__":
-    main()

@@ -1,9 +1,7 @@
-#!/usr/bin/python3
 """Draws an ice sheet's cells (cells.txt written by `thin_ice sheet`) as a PNG picture.
 
-usage: scripts/plot_sheet CELLS_TXT OUT_PNG
+usage: scripts/study plot_sheet CELLS_TXT OUT_PNG
 """
-import os
 import random
 import sys
 
@@ -13,12 +11,14 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from png_output import check_png_path, save_png  # noqa: E402
+from .png_output import check_png_path, save_png  # noqa: E402
+
+PROG = "scripts/study plot_sheet"
+SUMMARY = "draws an ice sheet's cells (cells.txt of `thin_ice sheet`) as a PNG picture"
 
 
 def fail(message):
-    print(f"scripts/plot_sheet: {message}", file=sys.stderr)
+    print(f"{PROG}: {message}", file=sys.stderr)
     sys.exit(2)
 
 
@@ -47,11 +47,11 @@ def read_cells(path):
     return polygons
 
 
-def main():
-    if len(sys.argv) != 3:
+def main(argv):
+    if len(argv) != 2:
         sys.exit(__doc__)
-    check_png_path("scripts/plot_sheet", "OUT_PNG", sys.argv[2])
-    polygons = read_cells(sys.argv[1])
+    check_png_path(PROG, "OUT_PNG", argv[1])
+    polygons = read_cells(argv[0])
     xs = [x for p in polygons for x, _ in p]
     ys = [y for p in polygons for _, y in p]
     width = max(xs) - min(xs)
@@ -69,9 +69,5 @@ def main():
     ax.set_ylabel("y [m]")
     ax.set_title(f"Voronoi ice sheet: {len(polygons)} cells")
     fig.tight_layout()
-    save_png(fig, sys.argv[2], dpi=110)
-    print(f"wrote {sys.argv[2]}")
-
-
-if __name__ == "__main__":
-    main()
+    save_png(fig, argv[1], dpi=110)
+    print(f"wrote {argv[1]}")

@@ -1,4 +1,3 @@
-#!/usr/bin/python3
 """Brings run directories of `thin_ice run` made at one structural factor alpha (Eq. 18, F_cal =
 alpha F) to another, without running them again: alpha multiplies the output only and enters no
 equation of motion, so loads.csv's F_cal column is alpha times its raw column, and the statistics
@@ -6,7 +5,7 @@ are worked out again from it by `thin_ice analyse`, with the code `thin_ice run`
 a run. The result is what a run made at the new alpha writes (test/test_recalibrate.py compares
 the two).
 
-usage: scripts/recalibrate RUN_DIR [RUN_DIR...] [--alpha A] [--tool PATH]
+usage: scripts/study recalibrate RUN_DIR [RUN_DIR...] [--alpha A] [--tool PATH]
 
 Without --alpha, the new alpha is structure.calibration_factor of the run's scenario file as it
 stands now (summary.json's scenario.file, relative to the repository root, with the run's own
@@ -29,9 +28,10 @@ import os
 import sys
 import tempfile
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
-from run_summary import analyse, default_tool, replace_files, summary_text  # noqa: E402
+from .run_summary import analyse, default_tool, replace_files, summary_text
+
+PROG = "scripts/study recalibrate"
+SUMMARY = "brings runs to another alpha of Eq. 18 (F_cal and its statistics) without running them again"
 
 
 class RunError(Exception):
@@ -112,7 +112,7 @@ def recalibrate(run_dir, tool, alpha_new=None):
     loads_text = rescaled_loads(loads_path, alpha_new)
     summary["calibration_factor"] = alpha_new
     summary.setdefault("recalibrations", []).append(
-        {"from_alpha": alpha_run, "to_alpha": alpha_new, "by": "scripts/recalibrate",
+        {"from_alpha": alpha_run, "to_alpha": alpha_new, "by": PROG,
          "date": datetime.date.today().isoformat()})
     # The statistics of the new column, from a copy of the two files: the run stays as it was
     # until both are ready.
@@ -130,23 +130,19 @@ def recalibrate(run_dir, tool, alpha_new=None):
     return f"alpha {alpha_run:g} -> {alpha_new:g}: F_cal and its statistics worked out again"
 
 
-def main():
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+def main(argv):
+    parser = argparse.ArgumentParser(prog=PROG, description=__doc__.split("\n\n")[0])
     parser.add_argument("run_dirs", nargs="+", metavar="RUN_DIR")
     parser.add_argument("--alpha", type=float, help="the new alpha [-] (default: the scenario file's)")
     parser.add_argument("--tool", help="path of the thin_ice program")
-    args = parser.parse_args()
-    tool = args.tool or default_tool("scripts/recalibrate")
+    args = parser.parse_args(argv)
+    tool = args.tool or default_tool(PROG)
     status = 0
     for run_dir in args.run_dirs:
         try:
             alpha = None if args.alpha is None else check_alpha(args.alpha, "--alpha")
             print(f"{run_dir}: {recalibrate(run_dir, tool, alpha)}")
         except RunError as e:
-            print(f"scripts/recalibrate: {run_dir}: {e}", file=sys.stderr)
+            print(f"{PROG}: {run_dir}: {e}", file=sys.stderr)
             status = 2
     return status
-
-
-if __name__ == "__main__":
-    sys.exit(main())

@@ -1,8 +1,7 @@
-#!/usr/bin/python3
 """Does a strip stand for the full width? (issue #31, step 1): the load per metre of width of strip
 runs (several seeds) against full-width runs of the same series, over the same span of pushed length.
 
-usage: scripts/strip_vs_full --span L --full RUN_DIR... --strips RUN_DIR... [--alpha A] [--window W]
+usage: scripts/study strip_vs_full --span L --full RUN_DIR... --strips RUN_DIR... [--alpha A] [--window W]
 
 Prints one Markdown table: for each run, alpha F per metre of structure width [N/m] averaged over
 0-L and per window; then the strips' mean and seed range (max - min), and whether the full-width
@@ -13,8 +12,10 @@ import argparse
 import os
 import sys
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from strip_loads import read_run, window_means, within_seed_spread  # noqa: E402
+from .strip_loads import read_run, window_means, within_seed_spread
+
+PROG = "scripts/study strip_vs_full"
+SUMMARY = "does a strip stand for the full width: strip runs against full-width runs over the same span"
 
 
 def per_metre(run, alpha, span):
@@ -31,7 +32,7 @@ def per_metre(run, alpha, span):
 
 
 def main(argv):
-    p = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    p = argparse.ArgumentParser(prog=PROG, description=__doc__.split("\n")[0])
     p.add_argument("--span", type=float, required=True)
     p.add_argument("--full", nargs="+", required=True)
     p.add_argument("--strips", nargs="+", required=True)
@@ -39,7 +40,7 @@ def main(argv):
     p.add_argument("--window", type=float, default=0.5)
     a = p.parse_args(argv)
     if not (a.span > 0 and a.window > 0 and a.alpha > 0):
-        print("scripts/strip_vs_full: --span, --window and --alpha must be > 0", file=sys.stderr)
+        print(PROG + ": --span, --window and --alpha must be > 0", file=sys.stderr)
         return 2
     rows = {}
     try:
@@ -48,7 +49,7 @@ def main(argv):
             means = [m for _, m in window_means(lengths, loads, a.window, int(round(a.span / a.window)))]
             rows[run] = (sum(loads) / len(loads), means)
     except (OSError, ValueError, KeyError) as e:
-        print("scripts/strip_vs_full: %s" % e, file=sys.stderr)
+        print(PROG + ": %s" % e, file=sys.stderr)
         return 2
     windows = int(round(a.span / a.window))
     head = " | ".join("%.1f-%.1f m" % (k * a.window, (k + 1) * a.window) for k in range(windows))
@@ -69,7 +70,3 @@ def main(argv):
           % (centre, low, high, high - low, 100.0 * (high - low) / centre, full, 100.0 * (full / centre - 1.0),
              "within" if inside else "outside"))
     return 0
-
-
-if __name__ == "__main__":
-    sys.exit(main(sys.argv[1:]))
