@@ -590,6 +590,8 @@ def main(argv):
               "trusted. The tables after this one are of the reading before phase 2.", ""]
     lines += phase2_table(a.runs)
     lines.append("")
+    # Why the table's loads miss, as far as the runs have shown it: written by hand beside them.
+    lines += hand_written(os.path.join(a.runs, "phase2_why.md"))
     lines += targets_at_a_glance(runs)
     # Why each target missed above is missed, and what was tried: written by hand beside the runs.
     lines += hand_written(os.path.join(a.runs, "misses.md"))
