@@ -48,8 +48,11 @@ def read_cells(path):
 
 
 def main(argv):
+    if argv in (["-h"], ["--help"]):
+        print(__doc__.strip())
+        return 0
     if len(argv) != 2:
-        sys.exit(__doc__)
+        fail(f"{len(argv)} arguments; allowed: CELLS_TXT OUT_PNG (see --help)")
     check_png_path(PROG, "OUT_PNG", argv[1])
     polygons = read_cells(argv[0])
     xs = [x for p in polygons for x, _ in p]

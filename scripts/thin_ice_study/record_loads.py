@@ -8,14 +8,19 @@ Subscribes to structure/wrench and sim/status, prints a line every SECONDS of si
 import argparse
 import json
 import os
+import sys
 import time
 
 import rospy
 from geometry_msgs.msg import WrenchStamped
 
-from thin_ice_sim.msg import PanelLoads, SimStatus
-
 from .run_summary import replace_files
+
+try:  # the package's messages exist only in a built and sourced catkin workspace
+    from thin_ice_sim.msg import PanelLoads, SimStatus
+    MESSAGES_MISSING = None
+except ImportError as error:
+    MESSAGES_MISSING = error
 
 PROG = "scripts/study record_loads"
 SUMMARY = "records the simulator's structure load from ROS as a run directory (the demo's recorder)"
@@ -95,6 +100,11 @@ def main(argv):
     parser.add_argument("--every", type=positive_seconds, default=0.1, metavar="SECONDS",
                         help="[s] of simulated time between printed lines (default 0.1)")
     args = parser.parse_args(rospy.myargv(argv))  # without ROS remappings (name:=value)
+    if MESSAGES_MISSING is not None:
+        print(f"{PROG}: the thin_ice_sim messages cannot be imported ({MESSAGES_MISSING}); allowed: a run "
+              "with the catkin workspace built and sourced (source .ws/devel/setup.bash), as scripts/demo does",
+              file=sys.stderr)
+        return 2
     rospy.init_node("record_loads", anonymous=True)
     recorder = Recorder(args.out_dir, args.every)
     rospy.on_shutdown(recorder.write_once)
