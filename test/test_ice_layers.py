@@ -48,8 +48,10 @@ def make_run(folder, overrides, with_pieces=True):
                    "structure": {"toe_x_m": TOE_X}}, f)
     with open(os.path.join(folder, "snapshots", "index.csv"), "w") as f:
         f.write("file,time_s,pushed_length_m\ncells_000010.csv,10,0.5\n")
-    with open(os.path.join(folder, "loads.csv"), "w") as f:
-        f.write("time_s,pushed_length_m,horizontal_calibrated_N\n5,0.25,100\n10,0.5,300\n")
+    with open(os.path.join(folder, "load_bins.csv"), "w") as f:  # the kept record: two bins of 5 s
+        f.write("bin,time_s,pushed_length_m,duration_s,samples,horizontal_calibrated_mean_N,horizontal_calibrated_least_N,"
+                "horizontal_calibrated_greatest_N,vertical_raw_mean_N,pusher_force_mean_N,intact_bonds,broken_bonds\n"
+                "7,5,0.25,5,500,100,90,110,0,0,10,0\n14,10,0.5,5,500,300,290,310,0,0,9,1\n")
     with open(os.path.join(folder, "snapshots", "cells_000010.csv"), "w", newline="") as f:
         w = csv.writer(f)
         w.writerow(["cell", "x_m", "y_m", "z_m", "yaw_rad", "in_intact_sheet"] + (["piece_cells"] if with_pieces else [])

@@ -9,9 +9,15 @@ the same rule as scripts/study strip_vs_full.
 """
 import csv
 import json
+import math
 import os
 import sys
 import tempfile
+
+
+COLUMNS = ["bin", "time_s", "pushed_length_m", "duration_s", "samples", "horizontal_calibrated_mean_N",
+           "horizontal_calibrated_least_N", "horizontal_calibrated_greatest_N", "vertical_raw_mean_N",
+           "pusher_force_mean_N", "intact_bonds", "broken_bonds"]
 
 
 def write_run(folder, width, alpha, length, steady, mean, peak, slope, raw, experiment):
@@ -22,11 +28,14 @@ def write_run(folder, width, alpha, length, steady, mean, peak, slope, raw, expe
                "experiment": experiment}
     with open(os.path.join(folder, "summary.json"), "w") as f:
         json.dump(summary, f)
-    with open(os.path.join(folder, "loads.csv"), "w", newline="") as f:
+    # The kept record: 35 mm bins of 0.7 s at a constant raw load (F_cal = alpha raw).
+    with open(os.path.join(folder, "load_bins.csv"), "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["time_s", "pushed_length_m", "horizontal_raw_N"])
-        for k in range(int(round(length / 0.1)) + 1):
-            w.writerow([k * 2.0, round(k * 0.1, 6), raw])
+        w.writerow(COLUMNS)
+        bins = int(math.ceil(length / 0.035 - 1e-9))
+        for k in range(bins):
+            end = min((k + 1) * 0.035, length)
+            w.writerow([k, 20.0 * end, round(end, 9), 0.7, 70, alpha * raw, alpha * raw, alpha * raw, 0.0, 0.0, 0, 0])
 
 
 def main():

@@ -120,9 +120,12 @@ def main():
                 failures.append(f"t = {a['time_s']}: a column other than F_cal changed")
                 break
         s, ref = (json.load(open(os.path.join(d, "summary.json"))) for d in (low, high))
+        # The statistics come from the kept record's bins: their means, written at nine significant
+        # digits and rescaled, against those of the run made at 1.7 (two roundings of 5e-10 each);
+        # the scatter is a difference of such means, ten times smaller than them, so 1e-7.
         for key in STATISTICS:
             got, want = s["load"].get(key), ref["load"].get(key)
-            if (got is None) != (want is None) or (want is not None and relative(got, want) > 1e-8):
+            if (got is None) != (want is None) or (want is not None and relative(got, want) > 1e-7):
                 failures.append(f"load.{key}: {got} against {want} from the run at 1.7")
         for key in WINDOWS:
             if s["load"].get(key) != ref["load"].get(key):

@@ -36,7 +36,8 @@ def cpp_names(header_text):
                 items.append(constants[item])
         return tuple(items)
 
-    return constants, version, array("kLoadColumns"), array("kSnapshotColumns"), array("kSnapshotIndexColumns")
+    return (constants, version, array("kLoadColumns"), array("kSnapshotColumns"), array("kSnapshotIndexColumns"),
+            array("kLoadBinColumns"))
 
 
 def main():
@@ -51,9 +52,13 @@ def main():
             failures.append(f"{what}: {got!r}, expected {wanted!r}")
 
     with open(os.path.join(source, "include/thin_ice_sim/study/run_record.hpp")) as f:
-        constants, version, load_columns, snapshot_columns, index_columns = cpp_names(f.read())
+        constants, version, load_columns, snapshot_columns, index_columns, bin_columns = cpp_names(f.read())
+    with open(os.path.join(source, "include/thin_ice_sim/study/load_bins.hpp")) as f:
+        bin_length = float(re.search(r"kLoadBinLength = ([0-9.eE+-]+);", f.read()).group(1))
+    expect("LOAD_BIN_LENGTH", run_record.LOAD_BIN_LENGTH, bin_length)
+    expect("LOAD_BIN_COLUMNS", run_record.LOAD_BIN_COLUMNS, bin_columns)
     expect("schema version", run_record.SUMMARY_SCHEMA_VERSION, version)
-    for cpp, py in (("kSummaryFile", "SUMMARY_FILE"), ("kLoadsFile", "LOADS_FILE"),
+    for cpp, py in (("kSummaryFile", "SUMMARY_FILE"), ("kLoadsFile", "LOADS_FILE"), ("kLoadBinsFile", "LOAD_BINS_FILE"),
                     ("kCheckpointFile", "CHECKPOINT_FILE"), ("kSnapshotDir", "SNAPSHOT_DIR"),
                     ("kSnapshotIndexFile", "SNAPSHOT_INDEX_FILE")):
         expect(py, getattr(run_record, py), constants[cpp])
@@ -76,6 +81,10 @@ def main():
         expect("loads.csv columns", tuple(rows[0].keys()),
                run_record.LOAD_COLUMNS + (run_record.panel_column(1), run_record.panel_column(2)))
         expect("loads.csv rows", len(rows), 2)  # 0.02 s at 0.01 s per row
+        bins = run_record.read_load_bins(out)
+        expect("load_bins.csv rows", sum(bins["samples"]), 2)  # both rows, in one bin (4 mm at 0.2 m/s)
+        expect("load_bins.csv bins", bins["bin"], [0])
+        expect("load_bins.csv end", bins["time_s"], [float(rows[-1]["time_s"])])
         snapshots = os.path.join(out, run_record.SNAPSHOT_DIR)
         with open(os.path.join(snapshots, run_record.SNAPSHOT_INDEX_FILE)) as f:
             index = list(csv.DictReader(f))

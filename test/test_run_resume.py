@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """`thin_ice run --resume` (and `thin_ice resume`, the same): a run stopped at t = 0.4 s and resumed
 to 0.8 s writes the same loads.csv, byte for byte, as the run made in one go, and a summary whose
-statistics cover the whole history; one stopped between rows (t = 0.41 s) writes the same rows
+statistics cover the whole history (and one resumed from its checkpoint, load_bins.csv and summary
+alone, as a clone keeps a run in progress, the same bins and statistics); one stopped between rows (t = 0.41 s) writes the same rows
 again from the second row boundary on;
 the first failure, which starts phase 1, is found whether it lies before or after the resumption;
 an override given with --resume holds from the resumption on (rows before it unchanged, after it
@@ -58,8 +59,9 @@ def main():
     scenario = strip_scenario(source) + ["--output-interval", "0.02"]
     failures = []
     with tempfile.TemporaryDirectory() as tmp:
-        whole, split, off_grid, early, switched, floating, no_bottom = (
-            os.path.join(tmp, d) for d in ("whole", "split", "off_grid", "early", "switched", "floating", "no_bottom"))
+        whole, split, off_grid, early, switched, floating, no_bottom, kept_only = (
+            os.path.join(tmp, d) for d in ("whole", "split", "off_grid", "early", "switched", "floating", "no_bottom",
+                                           "kept_only"))
         for args in (scenario + ["--until-time", "0.8", "--out", whole],
                      scenario + ["--until-time", "0.4", "--out", split],
                      ["resume", split, "--until-time", "0.8"],  # the same as run --resume
@@ -77,6 +79,19 @@ def main():
             done = run(thin_ice, args)
             if done.returncode != 0:
                 sys.exit(f"FAIL: {' '.join(args)}: exit status {done.returncode}: {done.stderr.strip()}")
+        # What a clone keeps of a run in progress: its checkpoint, load_bins.csv and summary, not
+        # loads.csv. Resumed from those alone, then once more with the segment's own loads.csv.
+        for args in (scenario + ["--until-time", "0.4", "--out", kept_only], ["resume", kept_only, "--until-time", "0.8"],
+                     ["resume", kept_only, "--until-time", "0.9"]):
+            if args[0] == "resume" and args[-1] == "0.8":
+                os.remove(os.path.join(kept_only, "loads.csv"))
+            done = run(thin_ice, args)
+            if done.returncode != 0:
+                sys.exit(f"FAIL: {' '.join(args)}: exit status {done.returncode}: {done.stderr.strip()}")
+            if args[-1] == "0.8":
+                kept_rows = open(os.path.join(kept_only, "loads.csv")).read().splitlines()
+                sk = json.load(open(os.path.join(kept_only, "summary.json")))
+                bins_kept = list(csv.DictReader(open(os.path.join(kept_only, "load_bins.csv"))))
         with open(os.path.join(whole, "loads.csv")) as a, open(os.path.join(split, "loads.csv")) as b:
             if a.read() != b.read():
                 failures.append("the resumed loads.csv differs from the run made in one go")
@@ -99,6 +114,28 @@ def main():
             if resumed["load"]["phase1_range_m"] != sw["load"]["phase1_range_m"]:
                 failures.append(f"phase-1 range {resumed['load']['phase1_range_m']} {name}, "
                                 f"{sw['load']['phase1_range_m']} in one go")
+        # Resumed from the kept record alone: the same bins and statistics as in one go, a loads.csv
+        # of the segment's rows (those of the one-go run after 0.4 s) that says where it begins.
+        bins_whole = list(csv.DictReader(open(os.path.join(whole, "load_bins.csv"))))
+        if len(bins_kept) != len(bins_whole) or any(
+                a["bin"] != b["bin"] or a["samples"] != b["samples"] or
+                abs(float(a[k]) - float(b[k])) > 1e-8 * max(1.0, abs(float(b[k])))
+                for a, b in zip(bins_kept, bins_whole) for k in a if k not in ("bin", "samples")):
+            failures.append(f"resumed without loads.csv: {len(bins_kept)} bins, {len(bins_whole)} in one go, or "
+                            "their numbers differ")
+        for key in ("peak_N", "peak_at_m", "steady_mean_N", "phase1_slope_N_per_m", "first_failure_m"):
+            a, b = sw["load"][key], sk["load"][key]
+            if (a is None) != (b is None) or (a is not None and abs(a - b) > 1e-7 * max(1.0, abs(a))):
+                failures.append(f"load.{key} {b} resumed without loads.csv, {a} in one go")
+        whole_lines = open(os.path.join(whole, "loads.csv")).read().splitlines()
+        if kept_rows != whole_lines[:1] + whole_lines[21:] or sk["loads_csv_from_s"] != 0.4:
+            failures.append(f"resumed without loads.csv: {len(kept_rows)} lines from t = {sk['loads_csv_from_s']} s; "
+                            f"expected the header and the one-go run's {len(whole_lines) - 21} rows after 0.4 s")
+        sk9 = json.load(open(os.path.join(kept_only, "summary.json")))
+        if sk9["status"] != "completed" or sk9["loads_csv_from_s"] != 0.4 or sk9["resumed_at_m"] != [0.08, 0.16]:
+            failures.append(f"resumed again with the segment's loads.csv: status {sk9['status']}, loads_csv_from_s "
+                            f"{sk9['loads_csv_from_s']}, resumed_at_m {sk9['resumed_at_m']}")
+
         # Rows 0.02 s apart: after a short row ending at 0.41 s the next ends at 0.42 s (its loads
         # averaged over 0.41-0.42 s only), and from the one after each row is the one-go run's.
         whole_rows = open(os.path.join(whole, "loads.csv")).read().splitlines()

@@ -3,6 +3,7 @@
 // the one place where alpha of Eq. (18) multiplies a load.
 #pragma once
 
+#include <cstddef>
 #include <vector>
 
 namespace thin_ice {
@@ -80,10 +81,10 @@ inline CalibratedWrench calibratedTotal(const LoadSample& l, double alpha) {
 
 /// Panel `p`'s load as F_cal, about the panel's centre on the waterline.
 inline CalibratedWrench calibratedPanel(const LoadSample& l, int p, double alpha) {
-  const Torque3& t = l.panel_torque[static_cast<size_t>(p)];
-  return {calibrated(l.panel_horizontal[static_cast<size_t>(p)], alpha),
-          calibrated(l.panel_lateral[static_cast<size_t>(p)], alpha),
-          calibrated(l.panel_vertical[static_cast<size_t>(p)], alpha),
+  const Torque3& t = l.panel_torque[static_cast<std::size_t>(p)];
+  return {calibrated(l.panel_horizontal[static_cast<std::size_t>(p)], alpha),
+          calibrated(l.panel_lateral[static_cast<std::size_t>(p)], alpha),
+          calibrated(l.panel_vertical[static_cast<std::size_t>(p)], alpha),
           {calibrated(t.x, alpha), calibrated(t.y, alpha), calibrated(t.z, alpha)}};
 }
 

@@ -31,6 +31,7 @@ import json
 import os
 import sys
 
+from . import run_record
 from .png_output import check_png_path, save_png
 from .run_summary import floating_level, sheet_size
 
@@ -116,16 +117,17 @@ def run_table(run):
 
 
 def load_windows(run, width=0.1):
-    """(window centres [m], mean F_cal [N]) of the run's loads.csv over windows `width` long."""
+    """(window centres [m], mean F_cal [N]) of the run's kept record (load_bins.csv) over windows
+    `width` long: the bins whose end length falls in each, weighted by the time they cover."""
+    bins = run_record.read_load_bins(run)
     sums = {}
-    with open(os.path.join(run, "loads.csv"), newline="") as f:
-        for row in csv.DictReader(f):
-            k = int(float(row["pushed_length_m"]) / width)
-            total, count = sums.get(k, (0.0, 0))
-            sums[k] = (total + float(row["horizontal_calibrated_N"]), count + 1)
-    # A window holding less than half the samples of a full one (the record's last, cut short) is
-    # left out: its mean is of a few samples, not of the window.
-    full = max((count for _, count in sums.values()), default=0)
+    for length, mean, duration in zip(bins["pushed_length_m"], bins["horizontal_calibrated_mean_N"], bins["duration_s"]):
+        k = int(length / width)
+        weighted, covered = sums.get(k, (0.0, 0.0))
+        sums[k] = (weighted + mean * duration, covered + duration)
+    # A window covering less than half the time of a full one (the record's last, cut short) is
+    # left out: its mean is of a few bins, not of the window.
+    full = max((covered for _, covered in sums.values()), default=0.0)
     keys = sorted(k for k in sums if 2 * sums[k][1] >= full)
     return [(k + 0.5) * width for k in keys], [sums[k][0] / sums[k][1] for k in keys]
 

@@ -10,11 +10,13 @@ tail mean marked "not steady" where the rule in the code (include/thin_ice_sim/s
 found no window. Nothing here is judged that the rule did not find.
 """
 import json
+import math
 import os
 import re
 
 from .experiments import PHASE1_SLOPE, PUSHED_LENGTH, per_metre
-from .strip_loads import read_run, within_seed_spread
+from . import run_record
+from .strip_loads import within_seed_spread
 
 SERIES = ["W-1", "W-2", "W-3", "M-1", "M-2", "S-1", "S-2"]
 EXPERIMENT_LENGTH = PUSHED_LENGTH  # [m] Table 5, per series (config/experiments.yaml)
@@ -81,11 +83,13 @@ def row(series, label, path):
 
 
 def span_mean(path, span):
-    """alpha F per metre of width averaged over 0-span [N/m], from the run's loads.csv."""
-    summary, lengths, raw, _ = read_run(path)
-    values = [ALPHA * f / summary["structure_width_m"]
-              for length, f in zip(lengths, raw) if length <= span]
-    return sum(values) / len(values) if values else float("nan")
+    """alpha F per metre of width averaged over 0-span [N/m], from the run's kept record (load_bins.csv:
+    the same in a clone as where the run was made), at the paper's alpha."""
+    summary = run_record.read_summary(path)
+    mean = run_record.mean_over(run_record.read_load_bins(path), -math.inf, span + 1e-9)
+    if mean is None:
+        return float("nan")
+    return ALPHA / summary["calibration_factor"] * mean / summary["structure_width_m"]
 
 
 def checks(root, series, runs):

@@ -6,7 +6,9 @@ run was resumed from its checkpoint (grey dash-dotted; summary.json's resumed_at
 
 usage: scripts/study plot RUN_DIR [RUN_DIR...] [--out PNG]
 
-Reads RUN_DIR/loads.csv (or loads.csv.partial of a run still going) and RUN_DIR/summary.json.
+Reads RUN_DIR/loads.csv (or loads.csv.partial of a run still going) and RUN_DIR/summary.json; where
+loads.csv is absent or holds only the last segments (a clone keeps only the kept record), the
+means of load_bins.csv's 35 mm bins.
 Without --out each run is drawn to RUN_DIR/load.png; with --out all runs go into one picture,
 one panel per run. Snapshots (RUN_DIR/snapshots) are not drawn.
 """
@@ -36,8 +38,17 @@ BLUE, GREEN, ORANGE, GREY = "#1f77b4", "#2ca02c", "#ff7f0e", "0.45"
 def read_run(run_dir):
     """Returns (L [m], F_cal [N], summary dict or None, note about the data)."""
     path = run_record.loads_path(run_dir)
+    summary = run_record.read_summary(run_dir)
+    whole_rows = path is not None and not (summary or {}).get("loads_csv_from_s")
+    if not whole_rows and os.path.exists(os.path.join(run_dir, run_record.LOAD_BINS_FILE)):
+        # A clone's copy of a run (loads.csv is not kept) or a run resumed there: the kept record.
+        try:
+            bins = run_record.read_load_bins(run_dir)
+        except ValueError as e:
+            sys.exit(f"{PROG}: {e}")
+        return bins["pushed_length_m"], bins["horizontal_calibrated_mean_N"], summary, f"means of {1000 * run_record.LOAD_BIN_LENGTH:.0f} mm bins"
     if path is None:
-        sys.exit(f"{PROG}: {run_dir}: no loads.csv (is it the --out directory of a `thin_ice run`?)")
+        sys.exit(f"{PROG}: {run_dir}: no loads.csv nor load_bins.csv (is it the --out directory of a `thin_ice run`?)")
     note = "partial" if path.endswith(".partial") else ""
     lengths, loads = [], []
     with open(path, newline="") as f:
@@ -52,7 +63,6 @@ def read_run(run_dir):
                 break  # a half-written last line of a partial file
             lengths.append(length)
             loads.append(load)
-    summary = run_record.read_summary(run_dir)
     if summary is None:
         note = ", ".join(n for n in (note, "no summary.json") if n)
     return lengths, loads, summary, note

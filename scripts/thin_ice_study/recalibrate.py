@@ -1,7 +1,8 @@
 """Brings run directories of `thin_ice run` made at one structural factor alpha (Eq. 18, F_cal =
 alpha F) to another, without running them again: alpha multiplies the output only and enters no
-equation of motion, so loads.csv's F_cal column is alpha times its raw column, and the statistics
-are worked out again from it by `thin_ice analyse`, with the code `thin_ice run` uses at the end of
+equation of motion, so loads.csv's F_cal column is alpha times its raw column and the kept record's
+(load_bins.csv) calibrated columns scale with alpha; the statistics are worked out again from the
+bins by `thin_ice analyse`, with the code `thin_ice run` uses at the end of
 a run. The result is what a run made at the new alpha writes (test/test_recalibrate.py compares
 the two).
 
@@ -10,7 +11,8 @@ usage: scripts/study recalibrate RUN_DIR [RUN_DIR...] [--alpha A] [--tool PATH]
 Without --alpha, the new alpha is structure.calibration_factor of the run's scenario file as it
 stands now (summary.json's scenario.file, relative to the repository root, with the run's own
 --set overrides), as `thin_ice analyse` loads it with the C++ scenario loader. In each run,
-loads.csv's horizontal_calibrated_N becomes alpha times horizontal_raw_N; summary.json gets the
+loads.csv's horizontal_calibrated_N becomes alpha times horizontal_raw_N (where the directory has
+loads.csv), load_bins.csv's calibrated columns new/old alpha times theirs; summary.json gets the
 statistics and errors against the experiment worked out again, calibration_factor, and a
 "recalibrations" entry that records the change. --tool: the thin_ice program, whose `analyse`
 command is used (default: under .ws). Both files are written beside the old ones and then renamed
@@ -83,13 +85,40 @@ def rescaled_loads(path, alpha):
     return out.getvalue()
 
 
+def rescaled_bins(path, ratio):
+    """load_bins.csv's text with its three calibrated columns (mean, least, greatest F_cal) times
+    `ratio` (new alpha / old alpha), the other columns as they were."""
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    if not rows:
+        raise RunError(f"{path} is empty")
+    header = rows[0]
+    columns = [k for k, name in enumerate(header) if name.startswith("horizontal_calibrated_")]
+    if len(columns) != 3:
+        raise RunError(f"{path}: not the header of a load_bins.csv of `thin_ice run` ({len(columns)} calibrated columns)")
+    out = io.StringIO()
+    out.write(",".join(header) + "\n")
+    for number, row in enumerate(rows[1:], start=2):
+        if len(row) != len(header):
+            raise RunError(f"{path}: line {number} has {len(row)} fields, the header {len(header)}")
+        try:
+            for k in columns:
+                row[k] = f"{float(row[k]) * ratio:.9g}"
+        except ValueError:
+            raise RunError(f"{path}: line {number}: a calibrated load is not a number")
+        out.write(",".join(row) + "\n")
+    return out.getvalue()
+
+
 def recalibrate(run_dir, tool, alpha_new=None):
     """Returns a line saying what was done; raises RunError, leaving the run as it was."""
     summary_path, loads_path = os.path.join(run_dir, "summary.json"), os.path.join(run_dir, "loads.csv")
+    bins_path = os.path.join(run_dir, "load_bins.csv")
     if os.path.exists(loads_path + ".partial"):
         raise RunError("a run is still writing here (loads.csv.partial)")
-    if not (os.path.exists(summary_path) and os.path.exists(loads_path)):
-        raise RunError("no summary.json and loads.csv: not a finished run directory of `thin_ice run`")
+    if not (os.path.exists(summary_path) and os.path.exists(bins_path)):
+        raise RunError("no summary.json and load_bins.csv: not a finished run directory of `thin_ice run` (a run made "
+                       "before load_bins.csv: `thin_ice analyse RUN_DIR --write-bins` writes it)")
     try:
         with open(summary_path) as f:
             summary = json.load(f)
@@ -109,7 +138,9 @@ def recalibrate(run_dir, tool, alpha_new=None):
                            f"alpha = {value:g} ({where}); only that alpha is allowed here")
     if alpha_new == alpha_run:
         return f"already at alpha = {alpha_run:g}, left alone"
-    loads_text = rescaled_loads(loads_path, alpha_new)
+    # loads.csv where this directory has it (a clone keeps only the bins): F_cal = alpha F per row.
+    loads_text = rescaled_loads(loads_path, alpha_new) if os.path.exists(loads_path) else None
+    bins_text = rescaled_bins(bins_path, alpha_new / alpha_run)
     summary["calibration_factor"] = alpha_new
     summary.setdefault("recalibrations", []).append(
         {"from_alpha": alpha_run, "to_alpha": alpha_new, "by": PROG,
@@ -117,8 +148,8 @@ def recalibrate(run_dir, tool, alpha_new=None):
     # The statistics of the new column, from a copy of the two files: the run stays as it was
     # until both are ready.
     with tempfile.TemporaryDirectory() as scratch:
-        with open(os.path.join(scratch, "loads.csv"), "w", newline="") as f:
-            f.write(loads_text)
+        with open(os.path.join(scratch, "load_bins.csv"), "w", newline="") as f:
+            f.write(bins_text)
         with open(os.path.join(scratch, "summary.json"), "w") as f:
             f.write(summary_text(summary))
         try:
@@ -126,7 +157,10 @@ def recalibrate(run_dir, tool, alpha_new=None):
             summary["load"], summary["experiment"] = fresh["load"], fresh["experiment"]
         except RuntimeError as e:
             raise RunError(str(e).replace(scratch, run_dir))
-    replace_files({loads_path: loads_text, summary_path: summary_text(summary)})
+    files = {bins_path: bins_text, summary_path: summary_text(summary)}
+    if loads_text is not None:
+        files[loads_path] = loads_text
+    replace_files(files)
     return f"alpha {alpha_run:g} -> {alpha_new:g}: F_cal and its statistics worked out again"
 
 

@@ -9,6 +9,7 @@ SUMMARY_SCHEMA_VERSION = 1  # summary.json's "schema_version"; records before th
 
 SUMMARY_FILE = "summary.json"
 LOADS_FILE = "loads.csv"  # written through loads.csv.partial, renamed when the run ends
+LOAD_BINS_FILE = "load_bins.csv"  # the kept record: the whole run in bins of pushed length
 CHECKPOINT_FILE = "checkpoint.bin"
 SNAPSHOT_DIR = "snapshots"
 SNAPSHOT_INDEX_FILE = "index.csv"
@@ -16,6 +17,11 @@ SNAPSHOT_INDEX_FILE = "index.csv"
 # loads.csv: one row per output interval; these columns, then panel_1_N ... panel_P_N.
 LOAD_COLUMNS = ("time_s", "pushed_length_m", "horizontal_raw_N", "horizontal_calibrated_N", "vertical_raw_N",
                 "pusher_force_N", "intact_bonds", "broken_bonds", "contacts")
+# load_bins.csv: one row per bin of LOAD_BIN_LENGTH of pushed ice (include/thin_ice_sim/study/load_bins.hpp).
+LOAD_BIN_LENGTH = 0.035  # [m] the paper's output step; the C++ side's kLoadBinLength
+LOAD_BIN_COLUMNS = ("bin", "time_s", "pushed_length_m", "duration_s", "samples", "horizontal_calibrated_mean_N",
+                    "horizontal_calibrated_least_N", "horizontal_calibrated_greatest_N", "vertical_raw_mean_N",
+                    "pusher_force_mean_N", "intact_bonds", "broken_bonds")
 SNAPSHOT_COLUMNS = ("cell", "x_m", "y_m", "z_m", "yaw_rad", "in_intact_sheet", "piece_cells", "polygon_xy_m")
 SNAPSHOT_INDEX_COLUMNS = ("file", "time_s", "pushed_length_m")
 
@@ -52,3 +58,37 @@ def read_load_rows(run_dir):
         raise FileNotFoundError(f"{run_dir}: no {LOADS_FILE} (nor {LOADS_FILE}.partial)")
     with open(path) as f:
         return list(csv.DictReader(f))
+
+
+def read_load_bins(run_dir):
+    """load_bins.csv as a dict of columns: "pushed_length_m", "time_s", "duration_s" and the loads
+    [N] as lists of floats, "samples", "intact_bonds" and "broken_bonds" as lists of ints. Raises
+    FileNotFoundError naming the run where it has none (a run made before the file: `thin_ice
+    analyse RUN_DIR --write-bins` writes it from loads.csv) and ValueError naming the file and the
+    row where a row is not one of `thin_ice run`."""
+    path = os.path.join(run_dir, LOAD_BINS_FILE)
+    if not os.path.exists(path):
+        raise FileNotFoundError(f"{run_dir}: no {LOAD_BINS_FILE} (a run made before it: `thin_ice analyse {run_dir} "
+                                f"--write-bins` writes it from its {LOADS_FILE})")
+    whole = ("bin", "samples", "intact_bonds", "broken_bonds")
+    columns = {name: [] for name in LOAD_BIN_COLUMNS}
+    with open(path, newline="") as f:
+        for number, row in enumerate(csv.DictReader(f), 2):
+            try:
+                for name in LOAD_BIN_COLUMNS:
+                    columns[name].append(int(row[name]) if name in whole else float(row[name]))
+            except (KeyError, TypeError, ValueError):
+                raise ValueError(f"{path}, line {number}: not a row of the {LOAD_BINS_FILE} of `thin_ice run` "
+                                 "(a missing column or a row cut short)") from None
+    return columns
+
+
+def mean_over(bins, begin, end):
+    """Time-weighted mean calibrated horizontal load [N] of the bins whose end length lies in
+    (begin, end] [m], or None where there is none."""
+    weighted = duration = 0.0
+    for length, mean, d in zip(bins["pushed_length_m"], bins["horizontal_calibrated_mean_N"], bins["duration_s"]):
+        if begin < length <= end:
+            weighted += mean * d
+            duration += d
+    return weighted / duration if duration > 0 else None

@@ -1,10 +1,10 @@
 """The steady-state rule's verdict on a run's record cut short at every STEP metres of pushed
 length, with the code `thin_ice run` uses at the end of a run (`thin_ice analyse` on a copy of the
-run holding only the samples up to the cut). It shows whether a run's verdict holds as the run goes on:
+run holding only the bins of its kept record, load_bins.csv, up to the cut). It shows whether a run's verdict holds as the run goes on:
 a window found at one length that the load leaves later was a pause of phase 1, not phase 2.
 
 usage: scripts/study steady_by_length RUN_DIR [--step S] [--from L] [--tool PATH]
-  --step  spacing of the cuts [m] (default 0.5); the run's own end is always the last row
+  --step  spacing of the cuts [m] (default 0.5); the run's own end is always the last bin
   --from  first cut [m] (default: one step)
   --tool  the thin_ice program (default: the catkin build's, else the plain CMake build's)
 Prints a Markdown table on stdout: cut, steady window found or not, the window, its mean (or the
@@ -17,6 +17,7 @@ import shutil
 import sys
 import tempfile
 
+from . import run_record
 from .run_summary import analyse, default_tool
 
 PROG = "scripts/study steady_by_length"
@@ -35,15 +36,17 @@ def number(value, fmt=".0f"):
 
 def verdict_rows(tool, run, step, first):
     """[(cut [m], load object, experiment object)] for the cuts first, first + step, ... and the end."""
+    bins_path = os.path.join(run, run_record.LOAD_BINS_FILE)
     try:
-        with open(os.path.join(run, "loads.csv")) as f:
+        with open(bins_path) as f:
             header, *samples = f.read().splitlines()
         column = header.split(",").index("pushed_length_m")
         lengths = [float(line.split(",")[column]) for line in samples]
     except (OSError, ValueError) as e:
-        fail(f"{run} has no readable loads.csv with a pushed_length_m column ({e})")
+        fail(f"{run} has no readable {run_record.LOAD_BINS_FILE} with a pushed_length_m column ({e}; a run made "
+             f"before it: `thin_ice analyse {run} --write-bins` writes it)")
     if not lengths:
-        fail(f"{run}/loads.csv has no samples")
+        fail(f"{bins_path} has no bins")
     end = lengths[-1]
     cuts, k = [], 0
     # A cut within a millimetre of the end is the end (a record stops a few steps past its target).
@@ -55,7 +58,7 @@ def verdict_rows(tool, run, step, first):
     with tempfile.TemporaryDirectory() as tmp:
         for cut in cuts:
             shutil.copy(os.path.join(run, "summary.json"), tmp)
-            with open(os.path.join(tmp, "loads.csv"), "w") as f:
+            with open(os.path.join(tmp, run_record.LOAD_BINS_FILE), "w") as f:
                 f.write(header + "\n")
                 f.writelines(line + "\n" for line, x in zip(samples, lengths) if x <= cut + 1e-9)
             try:

@@ -8,8 +8,16 @@ from . import run_record
 def read_run(path):
     """(summary or None, lengths [m], raw horizontal loads [N], last row). A run killed before it
     wrote its summary still has its rows in loads.csv.partial (written row by row): those are read,
-    and the summary is None."""
+    and the summary is None. Where loads.csv is absent or holds only the last segments (a clone
+    keeps only the kept record), the bins of load_bins.csv stand for the rows: their end lengths,
+    their mean loads, and the last bin's bond counts."""
     summary = run_record.read_summary(path)
+    if summary is not None and (summary.get("loads_csv_from_s") or run_record.loads_path(path) is None):
+        bins = run_record.read_load_bins(path)
+        alpha = summary["calibration_factor"]
+        raw = [f / alpha for f in bins["horizontal_calibrated_mean_N"]]
+        last = {"broken_bonds": bins["broken_bonds"][-1], "intact_bonds": bins["intact_bonds"][-1]} if raw else None
+        return summary, bins["pushed_length_m"], raw, last
     rows = run_record.read_load_rows(path)
     lengths = [float(row["pushed_length_m"]) for row in rows]
     raw = [float(row["horizontal_raw_N"]) for row in rows]

@@ -35,7 +35,7 @@ WHERE
                     workspace, and use .ws/devel/lib/thin_ice_sim)
   --work DIR        the run directories (DIR/validation/RUN) and the sweep (DIR/sweep: the task
                     list, each task's log and end status) (default .ws)
-  --records DIR     where each run's summary.json, loads.csv, load.png and profiles.csv are
+  --records DIR     where each run's summary.json, load_bins.csv, loads.csv, load.png and profiles.csv are
                     copied for the report (default docs/validation)
   --report FILE     the report to write (default docs/validation.md)
 RUNNING
@@ -70,7 +70,7 @@ STUDY = os.path.join(ROOT, "scripts", "study")
 
 DEFAULT_SLURM_WALL_BUDGET = 14400  # [s] a task's slice of wall time under Slurm before it requeues
 SLURM_TIME_MARGIN = 600  # [s] the array's --time beyond the wall budget: set-up and the last write
-RECORD_FILES = ("summary.json", "load.png", "loads.csv", "profiles.csv")
+RECORD_FILES = ("summary.json", "load.png", "load_bins.csv", "loads.csv", "profiles.csv")
 
 
 def fail(message):
@@ -242,8 +242,11 @@ def plan(o):
         shutil.rmtree(run_dir, ignore_errors=True)  # nothing of an earlier run may be taken for this one's
         os.makedirs(run_dir)
         if o["resume"]:
-            for f in ("summary.json", "loads.csv", "checkpoint.bin"):
-                shutil.copy(os.path.join(record, f), run_dir)
+            # The kept record and the checkpoint go on; loads.csv too where this copy has it (a
+            # clone keeps only the bins: the resumed run then writes the new rows alone).
+            for f in ("summary.json", "load_bins.csv", "checkpoint.bin", "loads.csv"):
+                if f != "loads.csv" or os.path.isfile(os.path.join(record, f)):
+                    shutil.copy(os.path.join(record, f), run_dir)
         tasks.append({"name": name, "series": series, "length": length, "overrides": o["sets"] + overrides,
                       "run_dir": run_dir, "record": record, "resumed": o["resume"],
                       "keep_checkpoint": bool(o["tag"])})
@@ -451,8 +454,8 @@ def collect(sweep):
             if task["resumed"]:
                 say(f"{name}: {record} left as it was", sys.stderr)  # refused, or an unhealthy segment
                 continue
-        if not (os.path.isfile(os.path.join(run_dir, "loads.csv")) and os.path.isfile(os.path.join(run_dir, "summary.json"))):
-            say(f"{name}: no loads.csv and summary.json in {run_dir}: nothing copied", sys.stderr)
+        if not (os.path.isfile(os.path.join(run_dir, "load_bins.csv")) and os.path.isfile(os.path.join(run_dir, "summary.json"))):
+            say(f"{name}: no load_bins.csv and summary.json in {run_dir}: nothing copied", sys.stderr)
             continue
         subprocess.run([STUDY, "plot", run_dir], check=False)
         os.makedirs(record, exist_ok=True)

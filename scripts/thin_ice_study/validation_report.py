@@ -21,6 +21,7 @@ import re
 import sys
 
 from .experiments import ICE_TYPE, PAPER_TIM, PHASE1_SLOPE, PUSHED_LENGTH, STEADY_MEAN
+from . import run_record
 from .phase2_table import phase2_table
 from .png_output import save_png
 
@@ -54,28 +55,23 @@ def load_runs(root):
 
 
 def record(root, name, summary):
-    """What a run's loads.csv says beyond its summary: the mean F_cal over the whole record [N],
-    the broken bonds at the end, and the history itself (L, F_cal) for the comparison plots; with
-    the pushed length at the first broken bond [m] (None if none broke) as the summary of `thin_ice run`
-    gives it."""
-    path = os.path.join(root, name, "loads.csv")
-    if not os.path.exists(path):
+    """What a run's kept record (load_bins.csv) says beyond its summary: the mean F_cal over the whole
+    record [N], the broken bonds at the end, and the history itself (L, F_cal per bin) for the
+    comparison plots; with the pushed length at the first broken bond [m] (None if none broke) as
+    the summary of `thin_ice run` gives it. None for a run without the record."""
+    try:
+        bins = run_record.read_load_bins(os.path.join(root, name))
+    except FileNotFoundError:
         return None
-    lengths, loads, broken = [], [], 0
-    with open(path, newline="") as f:
-        for number, r in enumerate(csv.DictReader(f), 2):
-            try:
-                lengths.append(float(r["pushed_length_m"]))
-                loads.append(float(r["horizontal_calibrated_N"]))
-                broken = int(r["broken_bonds"])
-            except (KeyError, TypeError, ValueError):
-                fail(f"{path}, line {number}: not a row of the loads.csv of `thin_ice run` (a missing column or a row "
-                     "cut short)")
-    if not loads:
+    except ValueError as e:
+        fail(str(e))
+    if not bins["bin"]:
         return None
     first_failure = (summary.get("load") or {}).get("first_failure_m")
-    return {"first_failure_m": first_failure, "record_mean_N": sum(loads) / len(loads), "broken_end": broken,
-            "lengths": lengths, "loads": loads}
+    return {"first_failure_m": first_failure,
+            "record_mean_N": run_record.mean_over(bins, -math.inf, math.inf),
+            "broken_end": bins["broken_bonds"][-1],
+            "lengths": bins["pushed_length_m"], "loads": bins["horizontal_calibrated_mean_N"]}
 
 
 def spread_text(values, fmt="{:.0f}"):

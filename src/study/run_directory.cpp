@@ -5,6 +5,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -116,6 +117,18 @@ RunSummary readRunSummary(const std::string& run_dir) {
   r.output_interval = number("output_interval_s", 0.0, "a time [s]");
   r.wall_time = number("wall_time_s", 0.0, "a time [s]");
   r.steps = number("steps", 0L, "a whole number of steps");
+  // Written since load_bins.csv: where loads.csv begins (0 before: it held the whole run).
+  r.loads_csv_from = summary["loads_csv_from_s"] ? number("loads_csv_from_s", 0.0, "a time [s]") : 0.0;
+  // null: no bond had broken (jsonNumber writes +infinity as null).
+  const YAML::Node failure = summary["load"] ? summary["load"]["first_failure_m"] : YAML::Node();
+  if (failure && !failure.IsNull()) {
+    try {
+      r.first_failure_length = failure.as<double>();
+    } catch (const YAML::Exception&) {
+      throw std::runtime_error(path + ": \"load\".\"first_failure_m\" is " + YAML::Dump(failure) +
+                               "; allowed: a length [m] or null (no bond broken)");
+    }
+  }
   if (summary["resumed_at_m"]) {
     for (const YAML::Node& l : summary["resumed_at_m"]) r.resumed_at.push_back(l.as<double>());
   }
@@ -143,10 +156,79 @@ LoadHistory readLoadHistory(const std::string& csv_path) {
     h.time.push_back(csvNumber(row, column::kTime, csv_path));
     h.pushed_length.push_back(csvNumber(row, column::kPushedLength, csv_path));
     h.load.push_back(csvNumber(row, column::kHorizontalCalibrated, csv_path));
+    h.vertical.push_back(csvNumber(row, column::kVerticalRaw, csv_path));
+    h.pusher.push_back(csvNumber(row, column::kPusherForce, csv_path));
     h.intact_bonds.push_back(static_cast<int>(csvNumber(row, column::kIntactBonds, csv_path)));
     h.broken_bonds.push_back(static_cast<int>(csvNumber(row, column::kBrokenBonds, csv_path)));
   }
   return h;
+}
+
+std::vector<LoadBin> binLoadHistory(const LoadHistory& h) {
+  LoadBinner binner;
+  for (std::size_t k = 0; k < h.time.size(); ++k) {
+    LoadSample row;
+    row.time = h.time[k];
+    row.pushed_length = h.pushed_length[k];
+    row.horizontal_calibrated = h.load[k];
+    row.vertical_raw = h.vertical[k];
+    row.pusher_force = h.pusher[k];
+    row.intact_bonds = h.intact_bonds[k];
+    row.broken_bonds = h.broken_bonds[k];
+    binner.add(row);
+  }
+  return binner.bins();
+}
+
+std::vector<LoadBin> readLoadBins(const std::string& csv_path) {
+  namespace column = run_record::bin_column;
+  std::vector<LoadBin> bins;
+  long line = 1;
+  for (const CsvRow& row : readCsv(csv_path)) {
+    ++line;
+    LoadBin b;
+    auto count = [&](const char* name) {
+      const double value = csvNumber(row, name, csv_path);
+      if (!(value >= 0.0) || value != std::floor(value)) {
+        throw std::runtime_error(csv_path + " data row " + std::to_string(line - 1) + ": " + name + " " + row.at(name) +
+                                 "; allowed: a whole number >= 0");
+      }
+      return static_cast<long>(value);
+    };
+    b.index = count(column::kBin);
+    b.time = csvNumber(row, column::kTime, csv_path);
+    b.pushed_length = csvNumber(row, column::kPushedLength, csv_path);
+    b.duration = csvNumber(row, column::kDuration, csv_path);
+    b.samples = count(column::kSamples);
+    b.calibrated_mean = csvNumber(row, column::kCalibratedMean, csv_path);
+    b.calibrated_least = csvNumber(row, column::kCalibratedLeast, csv_path);
+    b.calibrated_greatest = csvNumber(row, column::kCalibratedGreatest, csv_path);
+    b.vertical_mean = csvNumber(row, column::kVerticalMean, csv_path);
+    b.pusher_mean = csvNumber(row, column::kPusherMean, csv_path);
+    b.intact_bonds = static_cast<int>(count(column::kIntactBonds));
+    b.broken_bonds = static_cast<int>(count(column::kBrokenBonds));
+    if (!bins.empty() && !(b.index > bins.back().index && b.time > bins.back().time &&
+                           b.pushed_length >= bins.back().pushed_length)) {
+      throw std::runtime_error(csv_path + " data row " + std::to_string(line - 1) + ": bin " + std::to_string(b.index) +
+                               " at t = " + row.at(column::kTime) + " s does not follow bin " +
+                               std::to_string(bins.back().index) + "; allowed: bins, times and lengths in increasing order "
+                               "(the record is damaged)");
+    }
+    if (b.samples == 0 || !(b.duration > 0.0)) {
+      throw std::runtime_error(csv_path + " data row " + std::to_string(line - 1) + ": a bin of " + std::to_string(b.samples) +
+                               " rows over " + row.at(column::kDuration) + " s; allowed: at least one row, over more than 0 s");
+    }
+    bins.push_back(b);
+  }
+  return bins;
+}
+
+std::vector<LoadBin> readRunLoadBins(const std::string& run_dir) {
+  const std::string bins_path = run_dir + "/" + run_record::kLoadBinsFile;
+  if (std::filesystem::exists(bins_path)) return readLoadBins(bins_path);
+  const std::string loads_path = run_dir + "/" + run_record::kLoadsFile;
+  if (std::filesystem::exists(loads_path)) return binLoadHistory(readLoadHistory(loads_path));
+  throw std::runtime_error("no " + bins_path + " nor " + loads_path + ": not a run directory of `thin_ice run`");
 }
 
 std::vector<SnapshotEntry> readSnapshotIndex(const std::string& run_dir) {

@@ -28,6 +28,18 @@ std::string loadsRow(const LoadSample& s, int panels) {
   return row + "\n";
 }
 
+std::string loadBinsText(const std::vector<LoadBin>& bins) {
+  std::string text = headerLine(kLoadBinColumns);
+  char row[320];
+  for (const LoadBin& b : bins) {
+    std::snprintf(row, sizeof(row), "%ld,%.9g,%.9g,%.9g,%ld,%.9g,%.9g,%.9g,%.9g,%.9g,%d,%d\n", b.index, b.time,
+                  b.pushed_length, b.duration, b.samples, b.calibrated_mean, b.calibrated_least,
+                  b.calibrated_greatest, b.vertical_mean, b.pusher_mean, b.intact_bonds, b.broken_bonds);
+    text += row;
+  }
+  return text;
+}
+
 std::string snapshotFileName(long loads_row) {
   char name[32];
   std::snprintf(name, sizeof(name), "cells_%06ld.csv", loads_row);

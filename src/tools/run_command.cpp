@@ -5,7 +5,8 @@
 //                [--backend cpu|cuda|auto] [--output-interval S] [--snapshots N] --out DIR
 //   thin_ice run --resume DIR [--accept-changed-scenario] [--set section.key=value]...
 //                (--until-length L|end | --until-time T) [--backend cpu|cuda|auto] [--snapshots N] [--profiles]
-// Writes DIR/loads.csv (one row per output interval, through loads.csv.partial), DIR/summary.json,
+// Writes DIR/loads.csv (one row per output interval, through loads.csv.partial), DIR/load_bins.csv
+// (the kept record: the rows in 35 mm bins of pushed length, load_bins.hpp), DIR/summary.json,
 // DIR/checkpoint.bin (the state at the end, unless the run became unhealthy) and with --snapshots
 // DIR/snapshots/cells_RRRRRR.csv (RRRRRR: loads.csv data row, 1-based; 000000: the sheet at rest)
 // listed in snapshots/index.csv; with --profiles DIR/profiles.csv (the rubble pile's side and top
@@ -14,8 +15,10 @@
 // structure's toe (structure.toe_x - sheet.x_min); a length beyond the travel is refused.
 // --resume goes on from DIR/checkpoint.bin with DIR's scenario and output interval to the new
 // target (the whole run's L or T), on any backend: the rows are appended to DIR/loads.csv (the old
-// file stays whole until the new one is complete), the statistics cover the whole history, and
-// the summary's wall time is the sum of the segments. --snapshots N then spreads N snapshots over
+// file stays whole until the new one is complete; where DIR has no loads.csv, as a clone keeps a
+// run, the new rows start one and the summary's loads_csv_from_s says where), the bins continue
+// DIR/load_bins.csv, the statistics, worked out on the bins, cover the whole history, and the
+// summary's wall time is the sum of the segments. --snapshots N then spreads N snapshots over
 // the new segment, the last at its end. --set with --resume switches a law on from the resumption
 // (e.g. ice.friction_ice_ice=0.6): the override joins the run's, and the summary's overrides_from_m
 // says from which L it holds. Only the keys the scenario registry marks switchable are taken there,
@@ -56,6 +59,7 @@
 #include "resume_switch.hpp"
 #include "thin_ice_sim/built_backends.hpp"
 #include "thin_ice_sim/checkpoint.hpp"
+#include "thin_ice_sim/study/load_bins.hpp"
 #include "thin_ice_sim/study/load_statistics.hpp"
 #include "thin_ice_sim/study/rubble_profiles.hpp"
 #include "thin_ice_sim/study/run_directory.hpp"
@@ -105,9 +109,10 @@ std::string writeSnapshot(const Simulation& sim, const std::string& dir, long ro
 /// What a resumed run takes over from its directory (inactive for a fresh run).
 struct Continuation {
   bool active = false;
-  std::string previous_csv;           ///< loads.csv as it was, header included
-  long rows = 0;                      ///< its data rows
-  std::vector<double> length, load;   ///< its history [m], [N] calibrated
+  std::string previous_csv;           ///< loads.csv as it was, header included (the header alone where it had none)
+  double loads_csv_from = 0.0;        ///< [s] where loads.csv's first row begins (0: the whole run)
+  long rows = 0;                      ///< its rows, those of loads.csv absent here included
+  std::vector<thin_ice::LoadBin> bins;  ///< its kept record (load_bins.csv)
   double first_failure_length = std::numeric_limits<double>::infinity();  ///< [m] its first broken bond, +infinity: none yet
   LoadSample last;                    ///< its last row (time, length, bond counts)
   double previous_wall = 0.0;         ///< [s] of the segments before
@@ -117,7 +122,7 @@ struct Continuation {
 };
 
 struct RunResult {
-  std::vector<double> length, load;  // [m], [N] calibrated: the history analysed
+  thin_ice::LoadBinner bins;         // the history analysed (load_bins.hpp)
   double first_failure_length = std::numeric_limits<double>::infinity();  // [m] L of the first row with a broken bond, +infinity: none
   double wall = 0.0;                 // [s] of stepping and output
   LoadSample last;                   // the last row written (zero loads before the first)
@@ -127,8 +132,7 @@ struct RunResult {
 
 RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& cont) {
   RunResult r;
-  r.length = cont.length;
-  r.load = cont.load;
+  r.bins = thin_ice::LoadBinner(cont.bins);
   r.first_failure_length = cont.first_failure_length;
   r.last = cont.last;
   const double dt = sim.timeStep(), velocity = sim.pusherVelocity();
@@ -206,8 +210,7 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
     }
     r.last = sim.loads();
     csv << loadsRow(r.last, panels) << std::flush;
-    r.length.push_back(r.last.pushed_length);
-    r.load.push_back(r.last.horizontal_calibrated);
+    r.bins.add(r.last);
     if (std::isinf(r.first_failure_length) && r.last.broken_bonds > 0) r.first_failure_length = r.last.pushed_length;
     // A signal in the interval that reached the target changes nothing: the run is complete.
     r.interrupted_by = stepsLeft() > 0 ? thin_ice_tools::stopSignal() : 0;
@@ -227,6 +230,10 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
   const std::string kept = cont.active && !r.error.empty() ? o.out + "/unhealthy_segment.csv" : csv_path;
   if (!csv || std::rename((csv_path + ".partial").c_str(), kept.c_str()) != 0) {
     throw std::runtime_error("cannot finish '" + kept + "'");
+  }
+  if (kept == csv_path) {
+    thin_ice::writeFileAtomically(o.out + "/" + thin_ice::run_record::kLoadBinsFile,
+                                  thin_ice::run_record::loadBinsText(r.bins.bins()));
   }
   if (kept != csv_path && !segment_snapshots.empty()) {
     for (const std::string& name : segment_snapshots) std::filesystem::remove(snapshot_dir + "/" + name);
@@ -272,6 +279,8 @@ std::string summaryJson(const Simulation& sim, const Options& o, const RunResult
     << ", \"structure_substeps\": " << sim.structureSubsteps()
     << ", \"structure_critical_time_step_s\": " << num(sim.structureCriticalTimeStep())
     << ",\n  \"output_interval_s\": " << num(o.output_interval)
+    << ", \"loads_csv_from_s\": " << num(cont.loads_csv_from)
+    << ", \"load_bin_length_m\": " << num(thin_ice::kLoadBinLength)
     << ",\n  \"target\": {\"" << (o.until_length > 0.0 ? "pushed_length_m" : "time_s") << "\": "
     << num(o.until_length > 0.0 ? o.until_length : o.until_time) << "}"
     << ",\n  \"steps\": " << sim.stepCount() << ", \"simulated_time_s\": " << num(sim.time())
@@ -319,7 +328,7 @@ void printReport(const Simulation& sim, const Options& o, const thin_ice::LoadSt
                 c.experiment->source.c_str(), c.width_scale, sim.params().structure.width, c.mean, c.mean_error_percent,
                 c.peak, c.peak_error_percent);
   }
-  std::printf("wrote %s/loads.csv and %s/summary.json\n", o.out.c_str(), o.out.c_str());
+  std::printf("wrote %s/loads.csv, %s/load_bins.csv and %s/summary.json\n", o.out.c_str(), o.out.c_str(), o.out.c_str());
 }
 
 /// A run directory that cannot be resumed: exit status 2, nothing written.
@@ -417,47 +426,73 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
     if (!cut.empty()) throw ResumeError(cut);
     o.output_interval = summary.output_interval;
 
-    // The history so far, which must end where the checkpoint is.
+    // The history so far, which must end where the checkpoint is: the kept record (load_bins.csv,
+    // or the bins of loads.csv for a run made before it) and, where this directory has it,
+    // loads.csv, whose rows the new ones follow. Without loads.csv (a fresh clone keeps the
+    // checkpoint, load_bins.csv and the summary) the segment's rows start a new loads.csv.
     const std::string csv_path = dir + "/" + thin_ice::run_record::kLoadsFile;
-    std::ifstream csv(csv_path);
-    if (!csv) throw ResumeError("no " + csv_path);
-    cont.previous_csv.assign(std::istreambuf_iterator<char>(csv), std::istreambuf_iterator<char>());
+    const std::string bins_path = dir + "/" + thin_ice::run_record::kLoadBinsFile;
     const int panels = std::max(0, sim->params().structure.panels);
     const std::string header = loadsHeader(panels);
-    if (cont.previous_csv.compare(0, header.size(), header) != 0) {
-      throw ResumeError(csv_path + ": its first line is not the header `thin_ice run` writes for " + std::to_string(panels) +
-                        " panels (" + header.substr(0, header.size() - 1) + ")");
-    }
-    if (cont.previous_csv.back() != '\n') throw ResumeError(csv_path + ": its last row is cut short (no line end)");
-    const thin_ice::LoadHistory history = thin_ice::readLoadHistory(csv_path);
-    cont.length = history.pushed_length;
-    cont.load = history.load;
-    cont.first_failure_length = thin_ice::firstFailureLength(history.pushed_length, history.broken_bonds);
-    cont.rows = static_cast<long>(cont.length.size());
-    // Rows come one output interval apart (or closer: a short row at an earlier target), from
-    // the first interval on: a row deleted at the start or in the middle leaves a wider gap, which
-    // would stay in the history and its statistics.
-    const double interval = summary.output_interval;  // [s]
-    for (std::size_t k = 0; k < history.time.size(); ++k) {
-      const double previous = k == 0 ? 0.0 : history.time[k - 1];
-      const double gap = history.time[k] - previous;
-      if (!(gap > 0.0) || gap > interval * (1.0 + 1e-6) + 1e-9) {
-        throw ResumeError(csv_path + ": row " + std::to_string(k + 1) + " (t = " + jsonNumber(history.time[k]) +
-                          " s) comes " + jsonNumber(gap) + " s after " + (k == 0 ? "t = 0" : "the row before it") +
-                          "; allowed: more than 0 and at most the output interval, " + jsonNumber(interval) +
-                          " s (a row is missing or out of order: the record is damaged)");
+    const bool has_csv = std::filesystem::exists(csv_path);
+    if (!has_csv && !std::filesystem::exists(bins_path)) throw ResumeError("no " + bins_path + " nor " + csv_path);
+    if (has_csv) {
+      std::ifstream csv(csv_path);
+      if (!csv) throw ResumeError("cannot read " + csv_path);
+      cont.previous_csv.assign(std::istreambuf_iterator<char>(csv), std::istreambuf_iterator<char>());
+      if (cont.previous_csv.compare(0, header.size(), header) != 0) {
+        throw ResumeError(csv_path + ": its first line is not the header `thin_ice run` writes for " + std::to_string(panels) +
+                          " panels (" + header.substr(0, header.size() - 1) + ")");
       }
+      if (cont.previous_csv.back() != '\n') throw ResumeError(csv_path + ": its last row is cut short (no line end)");
+      const thin_ice::LoadHistory history = thin_ice::readLoadHistory(csv_path);
+      // Rows come one output interval apart (or closer: a short row at an earlier target), from
+      // where the file begins on: a row deleted at the start or in the middle leaves a wider gap,
+      // which would stay in the history and its statistics.
+      const double interval = summary.output_interval;  // [s]
+      for (std::size_t k = 0; k < history.time.size(); ++k) {
+        const double previous = k == 0 ? summary.loads_csv_from : history.time[k - 1];
+        const double gap = history.time[k] - previous;
+        if (!(gap > 0.0) || gap > interval * (1.0 + 1e-6) + 1e-9) {
+          throw ResumeError(csv_path + ": row " + std::to_string(k + 1) + " (t = " + jsonNumber(history.time[k]) +
+                            " s) comes " + jsonNumber(gap) + " s after " +
+                            (k == 0 ? "t = " + jsonNumber(summary.loads_csv_from) + " s, where the file begins"
+                                    : std::string("the row before it")) +
+                            "; allowed: more than 0 and at most the output interval, " + jsonNumber(interval) +
+                            " s (a row is missing or out of order: the record is damaged)");
+        }
+      }
+      if (history.time.empty() || std::fabs(history.time.back() - sim->time()) > 1e-8 * std::max(1.0, sim->time())) {
+        throw ResumeError(csv_path + " ends at t = " + (history.time.empty() ? std::string("(no rows)") : jsonNumber(history.time.back())) +
+                          " s but checkpoint.bin is at t = " + jsonNumber(sim->time()) +
+                          " s (remove it to go on from load_bins.csv alone)");
+      }
+      cont.loads_csv_from = summary.loads_csv_from;
+      // A run of the whole history in loads.csv: its rows are the exact record; the first failure
+      // is taken from them.
+      if (summary.loads_csv_from == 0.0) {
+        cont.first_failure_length = thin_ice::firstFailureLength(history.pushed_length, history.broken_bonds);
+        if (!std::filesystem::exists(bins_path)) cont.bins = thin_ice::binLoadHistory(history);
+      }
+    } else {
+      cont.previous_csv = header;
+      cont.loads_csv_from = sim->time();
     }
-    if (cont.rows > 0) {
-      cont.last.time = history.time.back();
-      cont.last.pushed_length = history.pushed_length.back();
-      cont.last.intact_bonds = history.intact_bonds.back();
-      cont.last.broken_bonds = history.broken_bonds.back();
+    if (std::filesystem::exists(bins_path)) cont.bins = thin_ice::readLoadBins(bins_path);
+    if (cont.bins.empty()) {
+      throw ResumeError((std::filesystem::exists(bins_path) ? bins_path : csv_path) + " holds no rows to go on from");
     }
-    // Rows hold nine significant digits; the step count above is the exact check.
-    if (cont.rows == 0 || std::fabs(cont.last.time - sim->time()) > 1e-8 * std::max(1.0, sim->time())) {
-      throw ResumeError(csv_path + " ends at t = " + (cont.rows ? jsonNumber(cont.last.time) : std::string("(no rows)")) +
-                        " s but checkpoint.bin is at t = " + jsonNumber(sim->time()) + " s");
+    if (!(has_csv && summary.loads_csv_from == 0.0)) cont.first_failure_length = summary.first_failure_length;
+    const thin_ice::LoadBin& last = cont.bins.back();
+    cont.rows = thin_ice::LoadBinner(cont.bins).samples();
+    cont.last.time = last.time;
+    cont.last.pushed_length = last.pushed_length;
+    cont.last.intact_bonds = last.intact_bonds;
+    cont.last.broken_bonds = last.broken_bonds;
+    // Bins and rows hold nine significant digits; the step count above is the exact check.
+    if (std::fabs(cont.last.time - sim->time()) > 1e-8 * std::max(1.0, sim->time())) {
+      throw ResumeError(bins_path + " ends at t = " + jsonNumber(cont.last.time) + " s but checkpoint.bin is at t = " +
+                        jsonNumber(sim->time()) + " s");
     }
     const double reached = o.until_length > 0.0 ? sim->pushedLength() : sim->time();
     const double target = o.until_length > 0.0 ? o.until_length : o.until_time;
@@ -483,7 +518,7 @@ constexpr double kMaxStepCount = 1e15;
 /// profiles.csv: into a directory that holds another run's files, the two runs' outputs would mix
 /// (old snapshots beside new loads). Refused, naming what is there.
 void refuseDirectoryWithRun(const std::string& dir) {
-  for (const char* name : {"summary.json", "loads.csv", "loads.csv.partial", "checkpoint.bin", "snapshots",
+  for (const char* name : {"summary.json", "loads.csv", "load_bins.csv", "loads.csv.partial", "checkpoint.bin", "snapshots",
                            "profiles.csv", "unhealthy_segment.csv"}) {
     if (std::filesystem::exists(std::filesystem::path(dir) / name)) {
       throw UsageError("--out " + dir + " already holds a run (" + name +
@@ -564,8 +599,8 @@ int thin_ice::cli::runCommand(int argc, char** argv) {
                    "unhealthy_segment.csv there)\n", options.out.c_str());
       return 3;
     }
-    const auto stats = thin_ice::analyseLoadHistory(result.length, result.load, thin_ice::SteadyStateRule(),
-                                                    result.first_failure_length);
+    const auto stats = thin_ice::analyseLoadBins(result.bins.bins(), thin_ice::SteadyStateRule(),
+                                                 result.first_failure_length);
     // The checkpoint first: a summary that says "completed" or "interrupted" has one beside it
     // that matches its loads.csv. An unhealthy state is not worth going on from.
     const std::string checkpoint_path = options.out + "/" + thin_ice::run_record::kCheckpointFile;

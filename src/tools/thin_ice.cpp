@@ -35,7 +35,7 @@ const std::vector<Command> kCommands = {
      resumeCommand, true},
     {"sheet", "ARGS", "generate a Voronoi ice sheet from a YAML file: picture, polygons, statistics",
      thin_ice::cli::sheetCommand, false},
-    {"analyse", "RUN_DIR", "a finished run's load statistics worked out again from its loads.csv (JSON)",
+    {"analyse", "RUN_DIR [--write-bins]", "a finished run's load statistics worked out again from its load record (JSON)",
      thin_ice::cli::analyseCommand, false},
     {"probe", "PROBE ARGS", "the investigation probes of the model (thin_ice probe --help lists them)",
      probeCommand, false},

@@ -2,12 +2,14 @@
 // snapshot list and the cells of one snapshot, for tools that analyse a finished run.
 #pragma once
 
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/simulation.hpp"
+#include "thin_ice_sim/study/load_bins.hpp"
 
 namespace thin_ice {
 
@@ -39,6 +41,8 @@ struct SwitchedOverride {
 struct RunSummary {
   std::string status;              ///< "completed", "interrupted" or "unhealthy"
   double output_interval = 0.0;    ///< [s] between rows of loads.csv
+  double loads_csv_from = 0.0;     ///< [s] where loads.csv's first row begins (0: it holds the whole run)
+  double first_failure_length = std::numeric_limits<double>::infinity();  ///< [m] load.first_failure_m; +infinity: none broke
   double wall_time = 0.0;          ///< [s] of stepping and output, every segment so far
   long steps = 0;                  ///< time steps taken by the end of the run
   std::vector<double> resumed_at;  ///< [m] pushed lengths at which the run was resumed before
@@ -54,10 +58,24 @@ struct LoadHistory {
   std::vector<double> time;           ///< [s] at the end of each output interval
   std::vector<double> pushed_length;  ///< [m]
   std::vector<double> load;           ///< [N] horizontal_calibrated_N, F_cal of Eq. (18)
+  std::vector<double> vertical;       ///< [N] vertical_raw_N
+  std::vector<double> pusher;         ///< [N] pusher_force_N
   std::vector<int> intact_bonds, broken_bonds;
 };
 /// Throws std::runtime_error naming the file and the column when a row lacks a number.
 LoadHistory readLoadHistory(const std::string& csv_path);
+
+/// The bins of a load history read from loads.csv (LoadBinner over its rows): the kept record of
+/// a run made before load_bins.csv existed.
+std::vector<LoadBin> binLoadHistory(const LoadHistory& history);
+
+/// RUN/load_bins.csv. Throws std::runtime_error naming the file and what is wrong: a missing
+/// number, bins out of order, a bin whose time or length runs backwards.
+std::vector<LoadBin> readLoadBins(const std::string& csv_path);
+
+/// The run's kept record: load_bins.csv where there is one, otherwise the bins of its loads.csv.
+/// Throws std::runtime_error when it has neither.
+std::vector<LoadBin> readRunLoadBins(const std::string& run_dir);
 
 /// One entry of RUN/snapshots/index.csv.
 struct SnapshotEntry {

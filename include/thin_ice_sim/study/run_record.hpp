@@ -6,8 +6,10 @@
 
 #include <cstddef>
 #include <string>
+#include <vector>
 
 #include "thin_ice_sim/load_sample.hpp"
+#include "thin_ice_sim/study/load_bins.hpp"
 
 namespace thin_ice::run_record {
 
@@ -17,6 +19,7 @@ inline constexpr int kSummarySchemaVersion = 1;
 
 inline constexpr const char* kSummaryFile = "summary.json";
 inline constexpr const char* kLoadsFile = "loads.csv";          ///< written through loads.csv.partial
+inline constexpr const char* kLoadBinsFile = "load_bins.csv";  ///< the kept record (load_bins.hpp)
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 inline constexpr const char* kSnapshotDir = "snapshots";
 inline constexpr const char* kSnapshotIndexFile = "index.csv";  ///< in kSnapshotDir
@@ -40,6 +43,31 @@ inline constexpr const char* kLoadColumns[] = {
     load_column::kTime,        load_column::kPushedLength, load_column::kHorizontalRaw,
     load_column::kHorizontalCalibrated, load_column::kVerticalRaw, load_column::kPusherForce,
     load_column::kIntactBonds, load_column::kBrokenBonds,  load_column::kContacts};
+
+/// load_bins.csv: one row per bin of pushed length (load_bins.hpp), the whole run's record, written
+/// at the end of each segment.
+namespace bin_column {
+inline constexpr const char* kBin = "bin";                                   ///< k: (k b, (k + 1) b]
+inline constexpr const char* kTime = "time_s";                               ///< [s] its last row's end
+inline constexpr const char* kPushedLength = "pushed_length_m";              ///< [m] its last row's end
+inline constexpr const char* kDuration = "duration_s";                       ///< [s] its rows' intervals
+inline constexpr const char* kSamples = "samples";                           ///< rows of loads.csv
+inline constexpr const char* kCalibratedMean = "horizontal_calibrated_mean_N";        ///< [N]
+inline constexpr const char* kCalibratedLeast = "horizontal_calibrated_least_N";      ///< [N]
+inline constexpr const char* kCalibratedGreatest = "horizontal_calibrated_greatest_N";  ///< [N]
+inline constexpr const char* kVerticalMean = "vertical_raw_mean_N";          ///< [N], +z
+inline constexpr const char* kPusherMean = "pusher_force_mean_N";            ///< [N], +x
+inline constexpr const char* kIntactBonds = "intact_bonds";
+inline constexpr const char* kBrokenBonds = "broken_bonds";
+}  // namespace bin_column
+inline constexpr const char* kLoadBinColumns[] = {
+    bin_column::kBin,           bin_column::kTime,          bin_column::kPushedLength,
+    bin_column::kDuration,      bin_column::kSamples,       bin_column::kCalibratedMean,
+    bin_column::kCalibratedLeast, bin_column::kCalibratedGreatest, bin_column::kVerticalMean,
+    bin_column::kPusherMean,    bin_column::kIntactBonds,   bin_column::kBrokenBonds};
+
+/// load_bins.csv's text: the header and one row per bin (nine significant digits).
+std::string loadBinsText(const std::vector<LoadBin>& bins);
 
 /// snapshots/cells_RRRRRR.csv: one row per cell.
 namespace snapshot_column {

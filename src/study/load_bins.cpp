@@ -1,0 +1,67 @@
+#include "thin_ice_sim/study/load_bins.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace thin_ice {
+
+long loadBinIndex(double pushed_length) {
+  // (k b, (k + 1) b]: a row ending on a boundary closes the bin below it. The 1e-9 of a bin
+  // absorbs the rounding of L = v t (0.035 m is not a binary fraction).
+  const double bins = pushed_length / kLoadBinLength;
+  return std::max(0L, static_cast<long>(std::ceil(bins - 1e-9)) - 1);
+}
+
+void LoadBinner::add(const LoadSample& row) {
+  const double start = bins_.empty() ? 0.0 : bins_.back().time;
+  const double duration = std::max(0.0, row.time - start);  // [s] the row's output interval
+  const long index = loadBinIndex(row.pushed_length);
+  if (bins_.empty() || index != bins_.back().index) {
+    LoadBin bin;
+    bin.index = index;
+    bin.calibrated_least = bin.calibrated_greatest = row.horizontal_calibrated;
+    bins_.push_back(bin);
+  }
+  LoadBin& bin = bins_.back();
+  const double before = bin.duration, after = bin.duration + duration;
+  // Time-weighted running means; a row of no duration (none is written) would count as a mean of one.
+  auto blend = [&](double mean, double value) {
+    return after > 0.0 ? (mean * before + value * duration) / after : value;
+  };
+  bin.calibrated_mean = blend(bin.calibrated_mean, row.horizontal_calibrated);
+  bin.vertical_mean = blend(bin.vertical_mean, row.vertical_raw);
+  bin.pusher_mean = blend(bin.pusher_mean, row.pusher_force);
+  bin.calibrated_least = std::min(bin.calibrated_least, row.horizontal_calibrated);
+  bin.calibrated_greatest = std::max(bin.calibrated_greatest, row.horizontal_calibrated);
+  bin.duration = after;
+  bin.samples += 1;
+  bin.time = row.time;
+  bin.pushed_length = row.pushed_length;
+  bin.intact_bonds = row.intact_bonds;
+  bin.broken_bonds = row.broken_bonds;
+}
+
+long LoadBinner::samples() const {
+  long n = 0;
+  for (const LoadBin& bin : bins_) n += bin.samples;
+  return n;
+}
+
+LoadStatistics analyseLoadBins(const std::vector<LoadBin>& bins, const SteadyStateRule& rule,
+                               double first_failure_length) {
+  std::vector<double> length, load;
+  for (const LoadBin& bin : bins) {
+    length.push_back(bin.pushed_length);
+    load.push_back(bin.calibrated_mean);
+  }
+  LoadStatistics s = analyseLoadHistory(length, load, rule, first_failure_length);
+  if (s.samples == 0) return s;  // rejected: steady_rule says why
+  const auto greatest = std::max_element(bins.begin(), bins.end(), [](const LoadBin& a, const LoadBin& b) {
+    return a.calibrated_greatest < b.calibrated_greatest;
+  });
+  s.peak_load = greatest->calibrated_greatest;
+  s.peak_length = greatest->pushed_length;
+  return s;
+}
+
+}  // namespace thin_ice
