@@ -60,9 +60,9 @@ def main():
         text = "\n".join(phase2_table(root))
     expected = [
         "| W-3 | strip, seed 1 | 6.00 (21.6) | 4.00-6.00 | 504 (860) | -41.4 % | missed | 800 "
-        "| 945 (1579) at 5.00 m | -40.2 % | 315 (150) | +110.0 % |",
+        "| 945 (1579) at 5.00 m | -40.2 % | missed | 315 (150) | +110.0 % |",
         "| W-3 | strip, seed 2 | 6.00 (21.6) | none | tail mean 500, not steady (860) | - | not judged | 794 "
-        "| 1000 (1579) at 5.00 m | -36.7 % | - | not judged |",
+        "| 1000 (1579) at 5.00 m | -36.7 % | missed | - | not judged |",
         # Strips over 0-6 m: 0.63 * 1000 / 2 = 315 and 0.63 * 1200 / 2 = 378, mean 346.5, range 63 (18.2 %).
         "- W-3: 2 strip runs (different sheets) over 0-6.00 m: 315-378 N/m (range 18.2 % of their mean).",
         # Over 0-2 m the full width's 315 is 31.5 N/m (-9.1 %) from the strips' mean: within the range 63.

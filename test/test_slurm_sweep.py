@@ -191,7 +191,7 @@ def main():
                 "--report", os.path.join(w, "report.md")]
 
     matrix = ["--series", "quick", "--seeds", "2,3", "--until-length", "1.0"]
-    names = ("quick", "quick-seed2", "quick-seed3")
+    names = ("quick", "quick-s2", "quick-s3")
     try:
         cluster.start()
         print(f"cluster up in {time.monotonic() - started:.1f} s")
@@ -200,7 +200,7 @@ def main():
         job = sub.stdout.strip()
         if sub.returncode != 0 or not job.isdigit():
             raise RuntimeError(f"--slurm: exit status {sub.returncode}, stdout {sub.stdout!r}, stderr {sub.stderr!r}")
-        partial = os.path.join(folder, "array/validation/quick-seed2/loads.csv.partial")
+        partial = os.path.join(folder, "array/validation/quick-s2/loads.csv.partial")
         deadline = time.monotonic() + 90
         while time.monotonic() < deadline and not (os.path.exists(partial) and len(rows(partial)) > 200):
             time.sleep(0.05)  # past t = 2 s of the run's 5 s
@@ -216,11 +216,13 @@ def main():
             with open(os.path.join(folder, "array/records", name, "summary.json")) as f:
                 s = json.load(f)
             resumed = len(s["resumed_at_m"])
-            if s["status"] != "completed" or s["pushed_length_m"] != 1.0 or (resumed > 0) != (name == "quick-seed2"):
+            if s["status"] != "completed" or s["pushed_length_m"] != 1.0 or (resumed > 0) != (name == "quick-s2"):
                 failures.append(f"{name}: status {s['status']}, L {s['pushed_length_m']}, resumed at {s['resumed_at_m']}; "
-                                f"expected completed to 1 m, resumed {'once' if name == 'quick-seed2' else 'never'}")
-        if not os.path.isfile(os.path.join(folder, "array/report.md")):
-            failures.append("--collect wrote no report")
+                                f"expected completed to 1 m, resumed {'once' if name == 'quick-s2' else 'never'}")
+        # quick is not a series of Table 5: the report has nothing to say and is not written, and
+        # that does not fail the sweep.
+        if os.path.exists(os.path.join(folder, "array/report.md")) or "holds no run of Table 5" not in got.stdout + got.stderr:
+            failures.append("--collect of a quick matrix wrote a report, or did not say why it wrote none")
         print(f"array with a requeued task done at {time.monotonic() - started:.1f} s")
 
         # 2. The same matrix here, two at a time: the same records, byte for byte.

@@ -1,6 +1,6 @@
 """Works out the load statistics of finished run directories of `thin_ice run` again, after a change
 to the statistics (load_statistics.hpp) or to the summary's "load" and "experiment" objects,
-without running the simulation again. `thin_ice analyse` computes them from the run's loads.csv
+without running the simulation again. `thin_ice analyse` computes them from the run's kept record (load_bins.csv)
 with the code `thin_ice run` uses at the end of a run; this script puts them into the run's
 summary.json in place of the old ones and adds the date and the reason to its "reanalyses" list.
 Nothing else in the run changes.

@@ -1,4 +1,4 @@
-// Vertical force balance of the sheet's front row in a run (docs/validation/calibration.md, "Where
+// Vertical force balance of the sheet's front row in a run (docs/journal/calibration.md, "Where
 // the rest of the vertical load goes"): what holds the front row down while the structure lifts
 // it, from the cell poses of a snapshot, through the model's own laws (no velocities: the elastic
 // and static parts only).
