@@ -118,32 +118,24 @@ TEST(LoadBins, StatisticsTakeTheMeansAsSamplesAndThePeakFromTheGreatestRow) {
   EXPECT_NEAR(binner.bins()[14].calibrated_mean, 100.0 + 800.0 / 70.0, 1e-9);
 }
 
+/// readLoadBins refuses the file written from `rows`, with a message holding `needle`.
+void expectRefused(const std::string& name, const std::string& rows, const std::string& needle) {
+  const std::string path = writeTemp(name, run_record::headerLine(run_record::kLoadBinColumns) + rows);
+  try {
+    readLoadBins(path);
+    ADD_FAILURE() << name << " was read";
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find(needle), std::string::npos) << e.what();
+  }
+  std::remove(path.c_str());
+}
+
 TEST(LoadBins, DamagedRecordsAreRefusedSayingWhatIsWrong) {
-  const std::string header = run_record::headerLine(run_record::kLoadBinColumns);
-  const std::string out_of_order =
-      writeTemp("thin_ice_test_bins_order.csv", header + "1,0.7,0.07,0.7,70,10,9,11,0,0,5,0\n"
-                                                         "0,1.4,0.035,0.7,70,10,9,11,0,0,5,0\n");
-  try {
-    readLoadBins(out_of_order);
-    FAIL() << "bins out of order were read";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("does not follow bin 1"), std::string::npos) << e.what();
-  }
-  const std::string empty_bin = writeTemp("thin_ice_test_bins_empty.csv", header + "0,0.7,0.035,0.7,0,10,9,11,0,0,5,0\n");
-  try {
-    readLoadBins(empty_bin);
-    FAIL() << "a bin of no rows was read";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("a bin of 0 rows"), std::string::npos) << e.what();
-  }
-  const std::string fractional = writeTemp("thin_ice_test_bins_frac.csv", header + "0.5,0.7,0.035,0.7,70,10,9,11,0,0,5,0\n");
-  try {
-    readLoadBins(fractional);
-    FAIL() << "a fractional bin index was read";
-  } catch (const std::runtime_error& e) {
-    EXPECT_NE(std::string(e.what()).find("bin 0.5; allowed: a whole number"), std::string::npos) << e.what();
-  }
-  for (const std::string& path : {out_of_order, empty_bin, fractional}) std::remove(path.c_str());
+  expectRefused("thin_ice_test_bins_order.csv",
+                "1,0.7,0.07,0.7,70,10,9,11,0,0,5,0\n0,1.4,0.035,0.7,70,10,9,11,0,0,5,0\n", "does not follow bin 1");
+  expectRefused("thin_ice_test_bins_empty.csv", "0,0.7,0.035,0.7,0,10,9,11,0,0,5,0\n", "a bin of 0 rows");
+  expectRefused("thin_ice_test_bins_frac.csv", "0.5,0.7,0.035,0.7,70,10,9,11,0,0,5,0\n",
+                "bin 0.5; allowed: a whole number");
 }
 
 }  // namespace

@@ -25,6 +25,7 @@ front of it [m] (small: the sheet has pushed under the rubble up to the structur
 failing in front of the pile). Snapshots without piece_cells give "-" where the sheet must be
 known, and the farthest of all cells below.
 """
+import functools
 import argparse
 import csv
 import json
@@ -34,6 +35,7 @@ import sys
 from . import run_record
 from .png_output import check_png_path, save_png
 from .run_summary import floating_level, sheet_size
+from .refusal import refuse
 
 PROG = "scripts/study ice_layers"
 SUMMARY = "per snapshot, the broken ice under and over the sheet's level and the sheet pressed down"
@@ -44,8 +46,7 @@ COLUMNS = ["run", "pushed_length_m", "cells_below", "sheet_cells_below", "cells_
 EARLIER_COLUMNS = COLUMNS[:-1]
 
 
-def fail(message):
-    sys.exit(f"{PROG}: {message}")
+fail = functools.partial(refuse, PROG)  # bad input: one line, exit status 2
 
 
 def layers(cells_csv, h, z_rest, toe_x):

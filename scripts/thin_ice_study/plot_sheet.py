@@ -2,6 +2,7 @@
 
 usage: scripts/study plot_sheet CELLS_TXT OUT_PNG
 """
+import functools
 import random
 import sys
 
@@ -12,14 +13,13 @@ import matplotlib.pyplot as plt  # noqa: E402
 from matplotlib.collections import PolyCollection  # noqa: E402
 
 from .png_output import check_png_path, save_png  # noqa: E402
+from .refusal import refuse
 
 PROG = "scripts/study plot_sheet"
 SUMMARY = "draws an ice sheet's cells (cells.txt of `thin_ice sheet`) as a PNG picture"
 
 
-def fail(message):
-    print(f"{PROG}: {message}", file=sys.stderr)
-    sys.exit(2)
+fail = functools.partial(refuse, PROG)  # bad input: one line, exit status 2
 
 
 def read_cells(path):

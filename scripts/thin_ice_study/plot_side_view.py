@@ -10,6 +10,7 @@ usage: scripts/study plot_side_view RUN_DIR OUT_PNG [--snapshot FILE] [--reach M
   --snapshot  a file in RUN_DIR/snapshots/ (default: the last one in snapshots/index.csv)
   --reach     how far in front of the toe to draw [m] (default 3.5)
 """
+import functools
 import argparse
 import csv
 import json
@@ -24,14 +25,13 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 from .png_output import check_png_path, save_png  # noqa: E402
 from .run_summary import sheet_size  # noqa: E402
+from .refusal import refuse
 
 PROG = "scripts/study plot_side_view"
 SUMMARY = "draws a run's snapshot near the structure, from the side and from above"
 
 
-def fail(message):
-    print(f"{PROG}: {message}", file=sys.stderr)
-    sys.exit(2)
+fail = functools.partial(refuse, PROG)  # bad input: one line, exit status 2
 
 
 def snapshot_entry(run, name=None):

@@ -59,43 +59,16 @@ def check_alpha(value, where):
     return float(value)
 
 
-def rescaled_loads(path, alpha):
-    """loads.csv's text with horizontal_calibrated_N = alpha * horizontal_raw_N in every row, the
-    other columns as they were (the nine significant digits of `thin_ice run`)."""
-    with open(path, newline="") as f:
-        text = f.read()
-    rows = list(csv.reader(io.StringIO(text)))
-    if not rows:
-        raise RunError(f"{path} is empty")
-    header = rows[0]
-    try:
-        raw, calibrated = header.index("horizontal_raw_N"), header.index("horizontal_calibrated_N")
-    except ValueError:
-        raise RunError(f"{path}: no horizontal_raw_N and horizontal_calibrated_N columns")
-    out = io.StringIO()
-    out.write(",".join(header) + "\n")
-    for number, row in enumerate(rows[1:], start=2):
-        if len(row) != len(header):
-            raise RunError(f"{path}: line {number} has {len(row)} fields, the header {len(header)}")
-        try:
-            row[calibrated] = f"{float(row[raw]) * alpha:.9g}"
-        except ValueError:
-            raise RunError(f"{path}: line {number}: horizontal_raw_N = {row[raw]!r} is not a number")
-        out.write(",".join(row) + "\n")
-    return out.getvalue()
-
-
-def rescaled_bins(path, ratio):
-    """load_bins.csv's text with its three calibrated columns (mean, least, greatest F_cal) times
-    `ratio` (new alpha / old alpha), the other columns as they were."""
+def rewritten(path, targets, value):
+    """The CSV file's text with the columns `targets(header)` (their indices) of every row set to
+    value(row, column) [a number], written with the nine significant digits of `thin_ice run`, the
+    other columns as they were. RunError names the file and the line where a row is not a record's."""
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
     if not rows:
         raise RunError(f"{path} is empty")
     header = rows[0]
-    columns = [k for k, name in enumerate(header) if name.startswith("horizontal_calibrated_")]
-    if len(columns) != 3:
-        raise RunError(f"{path}: not the header of a load_bins.csv of `thin_ice run` ({len(columns)} calibrated columns)")
+    columns = targets(header)
     out = io.StringIO()
     out.write(",".join(header) + "\n")
     for number, row in enumerate(rows[1:], start=2):
@@ -103,11 +76,35 @@ def rescaled_bins(path, ratio):
             raise RunError(f"{path}: line {number} has {len(row)} fields, the header {len(header)}")
         try:
             for k in columns:
-                row[k] = f"{float(row[k]) * ratio:.9g}"
+                row[k] = f"{value(row, k):.9g}"
         except ValueError:
-            raise RunError(f"{path}: line {number}: a calibrated load is not a number")
+            raise RunError(f"{path}: line {number}: a load is not a number")
         out.write(",".join(row) + "\n")
     return out.getvalue()
+
+
+def rescaled_loads(path, alpha):
+    """loads.csv's text with horizontal_calibrated_N = alpha * horizontal_raw_N in every row."""
+    found = {}
+
+    def calibrated_column(header):
+        if "horizontal_raw_N" not in header or "horizontal_calibrated_N" not in header:
+            raise RunError(f"{path}: no horizontal_raw_N and horizontal_calibrated_N columns")
+        found["raw"] = header.index("horizontal_raw_N")
+        return [header.index("horizontal_calibrated_N")]
+    return rewritten(path, calibrated_column, lambda row, _: float(row[found["raw"]]) * alpha)
+
+
+def rescaled_bins(path, ratio):
+    """load_bins.csv's text with its three calibrated columns (mean, least, greatest F_cal) times
+    `ratio` (new alpha / old alpha)."""
+    def calibrated_columns(header):
+        columns = [k for k, name in enumerate(header) if name.startswith("horizontal_calibrated_")]
+        if len(columns) != 3:
+            raise RunError(f"{path}: not the header of a load_bins.csv of `thin_ice run` ({len(columns)} calibrated "
+                           "columns)")
+        return columns
+    return rewritten(path, calibrated_columns, lambda row, k: float(row[k]) * ratio)
 
 
 def recalibrate(run_dir, tool, alpha_new=None):

@@ -29,6 +29,7 @@ usage: scripts/study sheet_bending RUN_DIR [--window M] [--reach M] [--every K] 
            else the plain CMake build's, under .ws)
 Prints a Markdown table, one row per snapshot.
 """
+import functools
 import argparse
 import csv
 import json
@@ -41,14 +42,13 @@ import numpy as np
 
 from . import ROOT
 from .run_summary import default_tool, scenario_of_run, sheet_size
+from .refusal import refuse
 
 PROG = "scripts/study sheet_bending"
 SUMMARY = "the intact sheet in front of the structure: its depth, slope and curvature against what breaks it"
 
 
-def fail(message):
-    print(f"{PROG}: {message}", file=sys.stderr)
-    sys.exit(2)
+fail = functools.partial(refuse, PROG)  # bad input: one line, exit status 2
 
 
 def fit(xs, zs, degree):

@@ -11,6 +11,7 @@ Prints a Markdown table on stdout: cut, steady window found or not, the window, 
 tail mean) and its error against the experiment, the peak and the phase-1 slope up to the cut.
 Exit status 2 when RUN_DIR is not a finished run or an argument is bad.
 """
+import functools
 import argparse
 import os
 import shutil
@@ -19,14 +20,13 @@ import tempfile
 
 from . import run_record
 from .run_summary import analyse, default_tool
+from .refusal import refuse
 
 PROG = "scripts/study steady_by_length"
 SUMMARY = "the steady-state rule's verdict on a run's record cut short at every STEP metres"
 
 
-def fail(message):
-    print(f"{PROG}: {message}", file=sys.stderr)
-    sys.exit(2)
+fail = functools.partial(refuse, PROG)  # bad input: one line, exit status 2
 
 
 def number(value, fmt=".0f"):

@@ -21,6 +21,7 @@ resumption of DIR to UNTIL (a length [m] or `end`) takes to keep the spacing of 
 Every other argument goes to `thin_ice run` unchanged. The overrides are printed before the run
 and stored by `thin_ice run` in DIR/summary.json, so `thin_ice resume DIR` goes on with them.
 """
+import functools
 import json
 import math
 import os
@@ -29,6 +30,7 @@ import sys
 import yaml
 
 from . import ROOT, run_record, scenario_file
+from .refusal import refuse
 
 PROG = "scripts/study strip"
 SUMMARY = "runs a scenario on a narrow strip (sheet, structure and channel cut in width): the fast bench"
@@ -41,9 +43,7 @@ RUNNER_CANDIDATES = [  # the thin_ice program of each build, in order of prefere
 ]
 
 
-def fail(message):
-    print(PROG + ": " + message, file=sys.stderr)
-    sys.exit(2)
+fail = functools.partial(refuse, PROG)  # bad input: one line, exit status 2
 
 
 def positive_number(flag, text):

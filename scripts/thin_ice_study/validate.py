@@ -52,6 +52,7 @@ Each task runs `thin_ice run` on its run directory: resumed when the directory h
 (a requeued or preempted task goes on where it stopped), started otherwise. Exit status: 0 all
 runs went as asked; 1 a run failed, was refused or has not finished (--collect); 2 bad arguments.
 """
+import functools
 import json
 import os
 import shutil
@@ -63,6 +64,7 @@ from concurrent.futures import ThreadPoolExecutor
 
 from . import ROOT, scenario_file
 from .phase2_table import EXPERIMENT_LENGTH, SERIES
+from .refusal import refuse
 
 PROG = "scripts/study validate"
 SUMMARY = "runs the validation matrix (here, or as a Slurm job array) and regenerates docs/validation.md"
@@ -75,9 +77,7 @@ NOTHING_TO_REPORT = 3  # validation_report's exit status for a folder without a 
 RECORD_FILES = ("summary.json", "load.png", "load_bins.csv", "loads.csv", "profiles.csv")
 
 
-def fail(message):
-    print(PROG + ": " + message, file=sys.stderr)
-    sys.exit(2)
+fail = functools.partial(refuse, PROG)  # bad input: one line, exit status 2
 
 
 def say(message, stream=sys.stdout):

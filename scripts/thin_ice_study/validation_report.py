@@ -12,6 +12,7 @@ history: docs/journal/validation-before-phase2.md.
 Exit status: 0 written; 2 bad input (the old report left as it was); 3 no run of Table 5's series
 in the folder (nothing to report, the old report left as it was).
 """
+import functools
 import argparse
 import os
 import sys
@@ -20,6 +21,7 @@ from .experiments import PEAK, STEADY_MEAN, STRUCTURE_WIDTH
 from .phase2_plot import SMOOTHING, draw
 from .phase2_table import ALPHA, SERIES, phase2_table, runs_of, targets
 from .run_record import LOAD_BIN_LENGTH
+from .refusal import refuse
 
 PROG = "scripts/study validation_report"
 SUMMARY = "writes docs/validation.md from the runs of the scenarios as they stand in docs/validation/"
@@ -27,10 +29,7 @@ FIGURE = "phase2_loads.png"  # in the runs folder
 NOTHING_TO_REPORT = 3  # exit status where the runs folder holds no run of Table 5's series
 
 
-def fail(message):
-    """Bad input: one message, exit status 2, and the old report left as it was."""
-    print(f"{PROG}: {message}", file=sys.stderr)
-    sys.exit(2)
+fail = functools.partial(refuse, PROG)  # bad input: one line, exit status 2
 
 
 def hand_written(path):
@@ -61,9 +60,8 @@ def check_runs(root):
                      "writes it from its loads.csv)")
             found += 1
     if not found:
-        print(f"{PROG}: --runs {root} holds no run of Table 5's series (no {root}/strips/ID-sK or {root}/full/ID with "
-              "a summary.json): nothing to report; the report is left as it was", file=sys.stderr)
-        sys.exit(NOTHING_TO_REPORT)
+        refuse(PROG, f"--runs {root} holds no run of Table 5's series (no {root}/strips/ID-sK or {root}/full/ID with "
+               "a summary.json): nothing to report; the report is left as it was", NOTHING_TO_REPORT)
 
 
 def main(argv):
