@@ -14,6 +14,7 @@ import time
 import rospy
 from geometry_msgs.msg import WrenchStamped
 
+from . import run_record
 from .run_summary import replace_files
 
 try:  # the package's messages exist only in a built and sourced catkin workspace
@@ -69,8 +70,9 @@ class Recorder:
         self.written = True
         os.makedirs(self.out_dir, exist_ok=True)
         alpha = self.alpha or 1.0
-        lines = ["time_s,pushed_length_m,horizontal_raw_N,horizontal_calibrated_N,vertical_raw_N,"
-                 "pusher_force_N,intact_bonds,broken_bonds,contacts\n"]
+        # loads.csv in the record's own columns (run_record.LOAD_COLUMNS, the mirror of run_record.hpp);
+        # what ROS does not carry (pusher force, intact bonds, contacts) is 0.
+        lines = [",".join(run_record.LOAD_COLUMNS) + "\n"]
         for t, pushed, fx, fz, broken in self.rows:
             lines.append("%.6f,%.6f,%.6f,%.6f,%.6f,0,0,%d,0\n" % (t, pushed, fx / alpha, fx, fz / alpha, broken))
         name = self.status.backend if self.status else "?"
@@ -78,9 +80,10 @@ class Recorder:
                    "backend": name, "calibration_factor": alpha}
         # Both files replaced together once both are written: an interrupted write leaves the old
         # pair (or none), never a truncated loads.csv.
-        replace_files({os.path.join(self.out_dir, "loads.csv"): "".join(lines),
-                       os.path.join(self.out_dir, "summary.json"): json.dumps(summary, indent=2)})
-        print("wrote %d rows to %s" % (len(self.rows), os.path.join(self.out_dir, "loads.csv")))
+        loads = os.path.join(self.out_dir, run_record.LOADS_FILE)
+        replace_files({loads: "".join(lines),
+                       os.path.join(self.out_dir, run_record.SUMMARY_FILE): json.dumps(summary, indent=2)})
+        print("wrote %d rows to %s" % (len(self.rows), loads))
 
 
 def positive_seconds(text):
