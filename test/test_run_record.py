@@ -7,7 +7,6 @@ here rather than in a plot.
     test_run_record.py THIN_ICE SOURCE_DIR   (THIN_ICE: the thin_ice program)
 """
 import csv
-import json
 import os
 import re
 import subprocess

@@ -28,9 +28,7 @@ known, and the farthest of all cells below.
 import functools
 import argparse
 import csv
-import json
 import os
-import sys
 
 from . import run_record
 from .png_output import check_png_path, save_png
@@ -85,12 +83,12 @@ def layers(cells_csv, h, z_rest, toe_x):
 def run_table(run):
     """(summary, rows) of one run: per snapshot, {column: value} with its pushed length."""
     try:
-        with open(os.path.join(run, "summary.json")) as f:
-            summary = json.load(f)
-        with open(os.path.join(run, "snapshots", "index.csv"), newline="") as f:
-            index = list(csv.DictReader(f))
+        summary = run_record.read_summary(run)
+        index = run_record.read_snapshot_index(run)
     except (OSError, ValueError) as e:
         fail(f"{run} is not a finished run with snapshots ({e})")
+    if summary is None:
+        fail(f"{run} is not a finished run with snapshots (no {run_record.SUMMARY_FILE})")
     if "structure" not in summary:
         fail(f"{run}/summary.json has no structure geometry (written by `thin_ice run` since 2026-12-01)")
     try:
@@ -100,7 +98,7 @@ def run_table(run):
     toe_x = summary["structure"]["toe_x_m"]
     rows = []
     for e in index:
-        row = layers(os.path.join(run, "snapshots", e["file"]), h, z_rest, toe_x)
+        row = layers(run_record.snapshot_path(run, e["file"]), h, z_rest, toe_x)
         row["pushed_length_m"] = float(e["pushed_length_m"])
         rows.append(row)
     show = lambda v: "-" if v is None else str(v)  # noqa: E731

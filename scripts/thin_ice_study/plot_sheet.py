@@ -4,7 +4,6 @@ usage: scripts/study plot_sheet CELLS_TXT OUT_PNG
 """
 import functools
 import random
-import sys
 
 import matplotlib
 

@@ -23,6 +23,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+from . import run_record  # noqa: E402
 from .png_output import check_png_path, save_png  # noqa: E402
 from .run_summary import sheet_size  # noqa: E402
 from .refusal import refuse
@@ -36,12 +37,11 @@ fail = functools.partial(refuse, PROG)  # bad input: one line, exit status 2
 
 def snapshot_entry(run, name=None):
     """(file, pushed length [m]) of snapshot `name` in RUN/snapshots/index.csv, or of its last one."""
-    index = os.path.join(run, "snapshots", "index.csv")
+    index = run_record.snapshot_index_path(run)
     if not os.path.exists(index):
         fail(f"RUN_DIR {run} has no snapshots/index.csv; allowed: the folder a `thin_ice run` with --snapshots N "
              "wrote (docs/validation/ copies keep no snapshots: give the run's own folder)")
-    with open(index) as f:
-        rows = list(csv.DictReader(f))
+    rows = run_record.read_snapshot_index(run)
     if name is not None:
         rows = [row for row in rows if row["file"] == name]
         if not rows:
@@ -61,7 +61,7 @@ def main(argv):
     if not a.reach > 0:
         fail(f"--reach {a.reach}; allowed: a length > 0 [m]")
     check_png_path(PROG, "OUT_PNG", a.out)
-    summary_path = os.path.join(a.run, "summary.json")
+    summary_path = os.path.join(a.run, run_record.SUMMARY_FILE)
     try:
         with open(summary_path) as f:
             summary = json.load(f)
@@ -77,7 +77,7 @@ def main(argv):
     structure, bottom = summary["structure"], summary["false_bottom"]
     toe, angle = structure["toe_x_m"], math.radians(structure["angle_deg"])
     name, length = snapshot_entry(a.run, a.snapshot)
-    with open(os.path.join(a.run, "snapshots", name)) as f:
+    with open(run_record.snapshot_path(a.run, name)) as f:
         rows = list(csv.DictReader(f))
     size = sheet_size(rows)
     pieces = size is not None

@@ -92,3 +92,21 @@ def mean_over(bins, begin, end):
             weighted += mean * d
             duration += d
     return weighted / duration if duration > 0 else None
+
+
+def snapshot_index_path(run_dir):
+    """RUN/snapshots/index.csv."""
+    return os.path.join(run_dir, SNAPSHOT_DIR, SNAPSHOT_INDEX_FILE)
+
+
+def read_snapshot_index(run_dir):
+    """snapshots/index.csv's rows as dicts of strings ("file", "time_s", "pushed_length_m"), in the
+    order written; raises OSError where the run has none (it was run without --snapshots N, or it
+    is a copy that keeps none)."""
+    with open(snapshot_index_path(run_dir), newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def snapshot_path(run_dir, name):
+    """The cells file `name` of the run's snapshot index."""
+    return os.path.join(run_dir, SNAPSHOT_DIR, name)

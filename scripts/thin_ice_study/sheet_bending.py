@@ -36,11 +36,10 @@ import json
 import math
 import os
 import subprocess
-import sys
 
 import numpy as np
 
-from . import ROOT
+from . import ROOT, run_record
 from .run_summary import default_tool, scenario_of_run, sheet_size
 from .refusal import refuse
 
@@ -148,12 +147,12 @@ def main(argv):
         fail(f"--every {a.every}; allowed: a whole number >= 1")
     tool = a.tool or default_tool(PROG)
     try:
-        with open(os.path.join(a.run, "summary.json")) as f:
-            summary = json.load(f)
-        with open(os.path.join(a.run, "snapshots", "index.csv"), newline="") as f:
-            index = list(csv.DictReader(f))
+        summary = run_record.read_summary(a.run)
+        index = run_record.read_snapshot_index(a.run)
     except (OSError, ValueError) as e:
         fail(f"RUN_DIR {a.run} is not a run with snapshots ({e})")
+    if summary is None:
+        fail(f"RUN_DIR {a.run} is not a run with snapshots (no {run_record.SUMMARY_FILE})")
     try:
         d = float(scenario_of_run(summary)["sheet"]["cell_size"])
         toe_x = float(summary["structure"]["toe_x_m"])
@@ -162,7 +161,7 @@ def main(argv):
     rows = []
     for e in index[::a.every]:
         rows.append((float(e["pushed_length_m"]),
-                     profile_row(os.path.join(a.run, "snapshots", e["file"]), toe_x, a.reach, a.window, d)))
+                     profile_row(run_record.snapshot_path(a.run, e["file"]), toe_x, a.reach, a.window, d)))
     slopes = [row[1] for _, row in rows if row is not None and row[1] is not None]
     law = bond_law(tool, summary, slopes)  # one call: the sheet is generated once
     h, z_rest = law["thickness_m"], law["floating_centroid_z_m"]

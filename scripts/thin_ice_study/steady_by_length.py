@@ -15,7 +15,6 @@ import functools
 import argparse
 import os
 import shutil
-import sys
 import tempfile
 
 from . import run_record

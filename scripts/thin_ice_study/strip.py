@@ -25,7 +25,6 @@ import functools
 import json
 import math
 import os
-import sys
 
 import yaml
 
