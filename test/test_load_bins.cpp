@@ -4,6 +4,7 @@
 // peak from the greatest row; and damaged files refused with what is wrong.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -43,6 +44,11 @@ TEST(LoadBins, RowsFallIntoHalfOpenBinsOfThirtyFiveMillimetres) {
   EXPECT_EQ(loadBinIndex(0.07), 1);
   EXPECT_EQ(loadBinIndex(3 * 0.035), 2);  // 0.105 is not a binary fraction: still bin 2
   EXPECT_EQ(loadBinIndex(0.1051), 3);
+  // The pusher's summed position drifts by about 1e-9 m over a run: a row meant to end on a
+  // boundary stays in the bin below; half a millimetre on (the next 0.01 s row) is the next bin.
+  EXPECT_EQ(loadBinIndex(7.035 + 2e-9), 200);
+  EXPECT_EQ(loadBinIndex(7.035 - 2e-9), 200);
+  EXPECT_EQ(loadBinIndex(7.0355), 201);
 }
 
 TEST(LoadBins, MeansAreWeightedByEachRowsIntervalAndKeepTheLeastAndGreatestRow) {
@@ -81,6 +87,10 @@ TEST(LoadBins, ARecordCutAtAnyRowWrittenReadBackAndContinuedIsTheRecordMadeInOne
   for (int k = 1; k <= 40; ++k) {  // 0.5 mm per row, F rising and wobbling
     const double t = 0.01 * k;
     rows.push_back(row(t, 0.05 * t, 100.0 + 7.0 * k + ((k * 37) % 11), k / 10));
+    if (k == 15) rows.push_back(row(0.154, 0.05 * 0.154, 400.0, 1));  // a short row: a target between rows
+  }
+  for (std::size_t k = 1; k < rows.size(); ++k) {  // the short row's successor covers 0.154-0.16 s
+    ASSERT_GT(rows[k].time, rows[k - 1].time);
   }
   LoadBinner whole;
   for (const LoadSample& s : rows) whole.add(s);
@@ -97,7 +107,14 @@ TEST(LoadBins, ARecordCutAtAnyRowWrittenReadBackAndContinuedIsTheRecordMadeInOne
       EXPECT_EQ(x.samples, y.samples);
       EXPECT_NEAR(x.calibrated_mean, y.calibrated_mean, 1e-8 * y.calibrated_mean) << "cut " << cut << ", bin " << b;
       EXPECT_EQ(x.calibrated_greatest, y.calibrated_greatest);
+      EXPECT_EQ(x.calibrated_least, y.calibrated_least);
+      EXPECT_NEAR(x.vertical_mean, y.vertical_mean, 1e-8 * std::fabs(y.vertical_mean));
+      EXPECT_NEAR(x.pusher_mean, y.pusher_mean, 1e-8 * y.pusher_mean);
       EXPECT_NEAR(x.duration, y.duration, 1e-12);
+      EXPECT_DOUBLE_EQ(x.time, y.time);
+      EXPECT_DOUBLE_EQ(x.pushed_length, y.pushed_length);
+      EXPECT_EQ(x.broken_bonds, y.broken_bonds);
+      EXPECT_EQ(x.intact_bonds, y.intact_bonds);
     }
     std::remove(path.c_str());
   }

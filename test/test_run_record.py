@@ -67,6 +67,15 @@ def main():
     if len(load_columns) != 9:  # the parse found the array (nine columns before the panels)
         failures.append(f"parsed {len(load_columns)} load columns from run_record.hpp, expected 9")
 
+    # mean_over weights each bin by the time it covers, over the bins ending in (begin, end]:
+    # (10 * 0.7 + 20 * 0.7 + 40 * 0.35) / 1.75 = 20; without the first bin 28 / 1.05 = 26.67.
+    bins = {"pushed_length_m": [0.035, 0.07, 0.1], "horizontal_calibrated_mean_N": [10.0, 20.0, 40.0],
+            "duration_s": [0.7, 0.7, 0.35]}
+    for begin, end, wanted in ((0.0, 0.1, 20.0), (0.035, 0.1, 28.0 / 1.05), (0.2, 0.3, None)):
+        got = run_record.mean_over(bins, begin, end)
+        if (got is None) != (wanted is None) or (wanted is not None and abs(got - wanted) > 1e-12):
+            failures.append(f"mean_over({begin}, {end}): {got}, expected {wanted}")
+
     # A record as `thin_ice run` writes it: quick.yaml (2 panels), two snapshots.
     with tempfile.TemporaryDirectory() as out:
         cmd = [thin_ice, "run", "--scenario", os.path.join(source, "config/scenarios/quick.yaml"), "--until-time", "0.02",

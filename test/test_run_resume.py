@@ -81,7 +81,8 @@ def main():
                 sys.exit(f"FAIL: {' '.join(args)}: exit status {done.returncode}: {done.stderr.strip()}")
         # What a clone keeps of a run in progress: its checkpoint, load_bins.csv and summary, not
         # loads.csv. Resumed from those alone, then once more with the segment's own loads.csv.
-        for args in (scenario + ["--until-time", "0.4", "--out", kept_only], ["resume", kept_only, "--until-time", "0.8"],
+        for args in (scenario + ["--until-time", "0.4", "--out", kept_only],
+                     ["resume", kept_only, "--snapshots", "1", "--until-time", "0.8"],
                      ["resume", kept_only, "--until-time", "0.9"]):
             if args[0] == "resume" and args[-1] == "0.8":
                 os.remove(os.path.join(kept_only, "loads.csv"))
@@ -131,6 +132,11 @@ def main():
         if kept_rows != whole_lines[:1] + whole_lines[21:] or sk["loads_csv_from_s"] != 0.4:
             failures.append(f"resumed without loads.csv: {len(kept_rows)} lines from t = {sk['loads_csv_from_s']} s; "
                             f"expected the header and the one-go run's {len(whole_lines) - 21} rows after 0.4 s")
+        # Its snapshot is numbered by the whole run's rows (0.8 s at 0.02 s a row: the 40th), not
+        # by the rows of its own loads.csv.
+        index = open(os.path.join(kept_only, "snapshots", "index.csv")).read().splitlines()
+        if len(index) != 2 or not index[1].startswith("cells_000040.csv,0.8,"):
+            failures.append(f"resumed without loads.csv: snapshots/index.csv {index}; expected cells_000040.csv at 0.8 s")
         sk9 = json.load(open(os.path.join(kept_only, "summary.json")))
         if sk9["status"] != "completed" or sk9["loads_csv_from_s"] != 0.4 or sk9["resumed_at_m"] != [0.08, 0.16]:
             failures.append(f"resumed again with the segment's loads.csv: status {sk9['status']}, loads_csv_from_s "
@@ -193,8 +199,18 @@ def main():
             del lines[row]  # lines[0] is the header
             with open(os.path.join(d, "loads.csv"), "w") as f:
                 f.writelines(lines)
+        # An older copy of loads.csv than the checkpoint (its last 5 rows gone), and a run carried on
+        # from its kept record whose load_bins.csv is then lost (loads.csv holds only the new rows).
+        stale, unkept = os.path.join(tmp, "stale"), os.path.join(tmp, "unkept")
+        shutil.copytree(split, stale)
+        shutil.copytree(kept_only, unkept)
+        with open(os.path.join(stale, "loads.csv")) as f:
+            lines = f.readlines()
+        with open(os.path.join(stale, "loads.csv"), "w") as f:
+            f.writelines(lines[:-5])
+        os.remove(os.path.join(unkept, "load_bins.csv"))
         before = {d: contents(d) for d in (split, corrupt, no_checkpoint, elsewhere, floating, no_bottom, flipped,
-                                           no_first_row, no_middle_row)}
+                                           no_first_row, no_middle_row, stale, unkept)}
         cases = [(["--resume", split, "--until-time", "0.8"], "already at t = 0.8"),
                  (["--resume", split, "--until-time", "1", "--out", tmp], "give none of them"),
                  # what a run under way cannot change: the mesh (spaces around the key too), the time
@@ -221,6 +237,8 @@ def main():
                  (["--resume", no_first_row, "--until-time", "1"], "row 1 (t = 0.04 s) comes 0.04 s after t = 0"),
                  (["--resume", no_middle_row, "--until-time", "1"], "row 10 (t = 0.22 s) comes 0.04 s after the row"),
                  (["--resume", no_checkpoint, "--until-time", "1"], "has no checkpoint.bin"),
+                 (["--resume", stale, "--until-time", "1"], "an older copy of the record (remove it to go on from"),
+                 (["--resume", unkept, "--until-time", "1"], "the run's kept record is missing"),
                  # `thin_ice resume DIR` refuses as `thin_ice run --resume DIR` does, in its words
                  (["resume", no_checkpoint, "--until-time", "1"], "thin_ice run: " + no_checkpoint + " has no"),
                  (["--resume", elsewhere, "--until-time", "1"], "relative to the directory the run was started from"),

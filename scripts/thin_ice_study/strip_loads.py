@@ -1,27 +1,38 @@
 """A run's load record per metre of structure width, for the strip tools (scripts/study strip_table,
 scripts/study strip_vs_full): one reader and one set of window means."""
+import collections
 import math
+import os
 
 from . import run_record
 
 
+Record = collections.namedtuple("Record", "summary lengths raw greatest last resolution")
+Record.__doc__ = """A run's load record: summary (None for a first segment still being written),
+lengths [m], raw horizontal loads [N] and the greatest raw load of each sample [N], the last
+sample's bond counts (a dict with "broken_bonds"), and the record's resolution [m] of pushed ice
+(0 for rows; a bin's width for the kept record)."""
+
+
 def read_run(path):
-    """(summary or None, lengths [m], raw horizontal loads [N], last row). A run killed before it
+    """The run's Record. Rows of loads.csv where it holds the whole run; a run killed before it
     wrote its summary still has its rows in loads.csv.partial (written row by row): those are read,
     and the summary is None. Where loads.csv is absent or holds only the last segments (a clone
-    keeps only the kept record), the bins of load_bins.csv stand for the rows: their end lengths,
-    their mean loads, and the last bin's bond counts."""
+    keeps only the kept record, a run resumed from it writes its own segment), the bins of
+    load_bins.csv stand for the rows: their end lengths, mean and greatest loads, and the last
+    bin's bond counts."""
     summary = run_record.read_summary(path)
-    if summary is not None and (summary.get("loads_csv_from_s") or run_record.loads_path(path) is None):
+    whole_rows = os.path.exists(os.path.join(path, run_record.LOADS_FILE)) and not (summary or {}).get("loads_csv_from_s")
+    if summary is not None and not whole_rows:
         bins = run_record.read_load_bins(path)
         alpha = summary["calibration_factor"]
-        raw = [f / alpha for f in bins["horizontal_calibrated_mean_N"]]
-        last = {"broken_bonds": bins["broken_bonds"][-1], "intact_bonds": bins["intact_bonds"][-1]} if raw else None
-        return summary, bins["pushed_length_m"], raw, last
+        last = {"broken_bonds": bins["broken_bonds"][-1], "intact_bonds": bins["intact_bonds"][-1]} if bins["bin"] else None
+        return Record(summary, bins["pushed_length_m"], [f / alpha for f in bins["horizontal_calibrated_mean_N"]],
+                      [f / alpha for f in bins["horizontal_calibrated_greatest_N"]], last, run_record.LOAD_BIN_LENGTH)
     rows = run_record.read_load_rows(path)
     lengths = [float(row["pushed_length_m"]) for row in rows]
     raw = [float(row["horizontal_raw_N"]) for row in rows]
-    return summary, lengths, raw, rows[-1] if rows else None
+    return Record(summary, lengths, raw, raw, rows[-1] if rows else None, 0.0)
 
 
 def window_means(lengths, values, window, windows=None):

@@ -66,17 +66,18 @@ def main(argv):
         print("|---|---:|---:|---:|---|")
     for path in args.runs:
         try:
-            summary, lengths, raw, last = read_run(path)
+            record = read_run(path)
         except (OSError, KeyError, ValueError) as e:
             print("%s: cannot read: %s" % (path, e))
             continue
+        summary, lengths, raw, greatest, last = record.summary, record.lengths, record.raw, record.greatest, record.last
         if args.upto is not None:
             kept = [k for k, l in enumerate(lengths) if l <= args.upto]
-            lengths, raw = [lengths[k] for k in kept], [raw[k] for k in kept]
+            lengths, raw, greatest = [lengths[k] for k in kept], [raw[k] for k in kept], [greatest[k] for k in kept]
         name = os.path.basename(os.path.normpath(path))
         width = summary["structure_width_m"] if summary else args.width
         per_metre = [args.alpha * f / width for f in raw]
-        peak = max(per_metre) if per_metre else float("nan")
+        peak = args.alpha * max(greatest) / width if greatest else float("nan")
         means = window_means(lengths, per_metre, args.window)
         if args.markdown:
             print("| %s | %.2f | %s | %.0f | %s |" % (name, lengths[-1] if lengths else 0.0, last["broken_bonds"], peak,

@@ -20,13 +20,15 @@ SUMMARY = "does a strip stand for the full width: strip runs against full-width 
 
 def per_metre(run, alpha, span):
     """(lengths, alpha F per metre of structure width) of one run directory over 0-span."""
-    summary, lengths, raw, _ = read_run(run)
+    record = read_run(run)
+    summary, lengths, raw = record.summary, record.lengths, record.raw
     if summary is None:
         raise ValueError("%s has no summary.json (a run still going, or killed)" % run)
     width = summary["structure_width_m"]
     kept = [k for k, length in enumerate(lengths) if length <= span + 1e-6]
     lengths, loads = [lengths[k] for k in kept], [alpha * raw[k] / width for k in kept]
-    if not lengths or lengths[-1] < span - 1e-3:
+    # A record of bins reaches the span where its last whole bin before it ends.
+    if not lengths or lengths[-1] < span - 1e-3 - record.resolution:
         raise ValueError("%s reaches L = %.3f m, short of the span %.3f m" % (run, lengths[-1] if lengths else 0.0, span))
     return lengths, loads
 

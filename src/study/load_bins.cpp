@@ -6,10 +6,12 @@
 namespace thin_ice {
 
 long loadBinIndex(double pushed_length) {
-  // (k b, (k + 1) b]: a row ending on a boundary closes the bin below it. The 1e-9 of a bin
-  // absorbs the rounding of L = v t (0.035 m is not a binary fraction).
+  // (k b, (k + 1) b]: a row ending on a boundary closes the bin below it. The pusher's position
+  // is summed step by step, so a row meant to end on a boundary ends up to about 1e-9 m off it
+  // after 30 m (2.7e-10 m at 7 m, weak ice's 4e-5 s steps), and loads.csv rounds it to nine
+  // digits: 1e-6 of a bin (35 nm) takes both to the bin below, and is 1/14000 of a 0.5 mm row.
   const double bins = pushed_length / kLoadBinLength;
-  return std::max(0L, static_cast<long>(std::ceil(bins - 1e-9)) - 1);
+  return std::max(0L, static_cast<long>(std::ceil(bins - 1e-6)) - 1);
 }
 
 void LoadBinner::add(const LoadSample& row) {

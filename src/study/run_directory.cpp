@@ -227,7 +227,16 @@ std::vector<LoadBin> readRunLoadBins(const std::string& run_dir) {
   const std::string bins_path = run_dir + "/" + run_record::kLoadBinsFile;
   if (std::filesystem::exists(bins_path)) return readLoadBins(bins_path);
   const std::string loads_path = run_dir + "/" + run_record::kLoadsFile;
-  if (std::filesystem::exists(loads_path)) return binLoadHistory(readLoadHistory(loads_path));
+  if (std::filesystem::exists(loads_path)) {
+    // Only a loads.csv of the whole run stands for its record: one begun at a resumption holds
+    // the rows after it alone.
+    const YAML::Node from = loadSummary(run_dir)["loads_csv_from_s"];
+    if (from && !from.IsNull() && from.as<double>() > 0.0) {
+      throw std::runtime_error("no " + bins_path + ", and " + loads_path + " holds the rows from t = " +
+                               from.as<std::string>() + " s on only: the run's kept record is missing");
+    }
+    return binLoadHistory(readLoadHistory(loads_path));
+  }
   throw std::runtime_error("no " + bins_path + " nor " + loads_path + ": not a run directory of `thin_ice run`");
 }
 

@@ -5,6 +5,7 @@
 // RUN_DIR is the output of a `thin_ice run` with --snapshots; its scenario is the one summary.json names
 // (thin_ice_sim/study/run_directory.hpp: run from the directory the run was started in).
 // Exit status: 0 done; 2 bad arguments, run directory or scenario.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <exception>
@@ -15,6 +16,7 @@
 #include "commands.hpp"
 #include "thin_ice_sim/study/front_row_balance.hpp"
 #include "thin_ice_sim/study/run_directory.hpp"
+#include "thin_ice_sim/study/run_record.hpp"
 #include "run_tool_args.hpp"
 
 namespace {
@@ -48,17 +50,28 @@ int thin_ice::cli::probeEdgeBalance(int argc, char** argv) {
                   row.cells.size(), row.area, row.weight, row.cut_bonds.size(), row.rear_cells.size());
     table += line;
 
-    const std::string loads_path = run + "/loads.csv";
+    // Each snapshot's row of loads.csv, found by its time: a loads.csv begun at a resumption (a
+    // run carried on from its kept record, summary.json's loads_csv_from_s > 0) does not start at
+    // row 1, and a short row at an earlier target shifts the numbering against t / interval.
+    const std::string loads_path = run + "/" + thin_ice::run_record::kLoadsFile;
     const auto loads = thin_ice::readCsv(loads_path);
+    std::vector<double> row_time;
+    for (const auto& r : loads) row_time.push_back(thin_ice::csvNumber(r, "time_s", loads_path));
     table += "| L [m] | structure's vertical load [N] | bonds across the cut [N] | buoyancy lost by the front row [N] "
              "| sum [N] | front row lift [mm] | row behind lift [mm] | broken bonds |\n";
     table += "|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const thin_ice::SnapshotEntry& entry : index) {
       if (entry.loads_row == 0) continue;  // the sheet at rest
-      if (entry.loads_row > static_cast<long>(loads.size())) {
-        throw std::runtime_error(entry.file + " belongs to row " + std::to_string(entry.loads_row) + ", past the end of " + loads_path);
+      // snapshots/index.csv gives the time to six significant digits: the row nearest to it.
+      const double tolerance = 1e-5 * std::max(1.0, entry.time);  // [s]
+      auto at = std::lower_bound(row_time.begin(), row_time.end(), entry.time - tolerance);
+      if (at != row_time.end() && at + 1 != row_time.end() && std::fabs(at[1] - entry.time) < std::fabs(*at - entry.time)) ++at;
+      if (at == row_time.end() || std::fabs(*at - entry.time) > tolerance) {
+        throw std::runtime_error(entry.file + " is at t = " + std::to_string(entry.time) + " s, which no row of " + loads_path +
+                                 " ends at (its rows run from t = " + (row_time.empty() ? std::string("-") : std::to_string(row_time.front())) +
+                                 " s)");
       }
-      const auto& load = loads[entry.loads_row - 1];
+      const auto& load = loads[static_cast<std::size_t>(at - row_time.begin())];
       std::vector<thin_ice::CellPose> poses;
       for (const thin_ice::CellSnapshot& c : thin_ice::readCellSnapshot(entry.file)) poses.push_back({c.x, c.y, c.z, c.yaw});
       const thin_ice::FrontRowBalance b = thin_ice::frontRowBalance(model, row, poses);

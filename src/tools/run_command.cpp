@@ -446,6 +446,20 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
       }
       if (cont.previous_csv.back() != '\n') throw ResumeError(csv_path + ": its last row is cut short (no line end)");
       const thin_ice::LoadHistory history = thin_ice::readLoadHistory(csv_path);
+      // Where it ends first: a loads.csv behind the checkpoint is an older copy of the record (the
+      // kept record, pulled, may have gone on), one past it a record whose checkpoint was not
+      // written after it.
+      const double t_end = history.time.empty() ? 0.0 : history.time.back();
+      const double tolerance = 1e-8 * std::max(1.0, sim->time());  // [s] rows hold nine digits
+      if (history.time.empty() || t_end < sim->time() - tolerance) {
+        throw ResumeError(csv_path + " ends at t = " + (history.time.empty() ? std::string("(no rows)") : jsonNumber(t_end)) +
+                          " s, before checkpoint.bin's t = " + jsonNumber(sim->time()) +
+                          " s: an older copy of the record (remove it to go on from load_bins.csv alone)");
+      }
+      if (t_end > sim->time() + tolerance) {
+        throw ResumeError(csv_path + " ends at t = " + jsonNumber(t_end) + " s, after checkpoint.bin's t = " +
+                          jsonNumber(sim->time()) + " s: the checkpoint is older than the record, which cannot be taken back");
+      }
       // Rows come one output interval apart (or closer: a short row at an earlier target), from
       // where the file begins on: a row deleted at the start or in the middle leaves a wider gap,
       // which would stay in the history and its statistics.
@@ -462,17 +476,24 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
                             " s (a row is missing or out of order: the record is damaged)");
         }
       }
-      if (history.time.empty() || std::fabs(history.time.back() - sim->time()) > 1e-8 * std::max(1.0, sim->time())) {
-        throw ResumeError(csv_path + " ends at t = " + (history.time.empty() ? std::string("(no rows)") : jsonNumber(history.time.back())) +
-                          " s but checkpoint.bin is at t = " + jsonNumber(sim->time()) +
-                          " s (remove it to go on from load_bins.csv alone)");
-      }
       cont.loads_csv_from = summary.loads_csv_from;
-      // A run of the whole history in loads.csv: its rows are the exact record; the first failure
-      // is taken from them.
+      // A loads.csv of the whole history: its rows are the exact record; the first failure is
+      // taken from them, and the kept record must hold as many rows (two continuations of one run
+      // to the same time, say one pulled and one made here, are not mixed).
       if (summary.loads_csv_from == 0.0) {
         cont.first_failure_length = thin_ice::firstFailureLength(history.pushed_length, history.broken_bonds);
-        if (!std::filesystem::exists(bins_path)) cont.bins = thin_ice::binLoadHistory(history);
+        if (!std::filesystem::exists(bins_path)) {
+          cont.bins = thin_ice::binLoadHistory(history);
+        } else {
+          const long kept = thin_ice::LoadBinner(thin_ice::readLoadBins(bins_path)).samples();
+          if (kept != static_cast<long>(history.time.size())) {
+            throw ResumeError(bins_path + " holds " + std::to_string(kept) + " rows but " + csv_path + " " +
+                              std::to_string(history.time.size()) + ": they are not one record");
+          }
+        }
+      } else if (!std::filesystem::exists(bins_path)) {
+        throw ResumeError("no " + bins_path + ", and " + csv_path + " holds the rows from t = " +
+                          jsonNumber(summary.loads_csv_from) + " s on only: the run's kept record is missing");
       }
     } else {
       cont.previous_csv = header;
