@@ -39,11 +39,7 @@ def read_run(run_dir):
     """Returns (L [m], F_cal [N], summary dict or None, note about the data)."""
     path = run_record.loads_path(run_dir)
     summary = run_record.read_summary(run_dir)
-    # Rows where loads.csv holds the whole run, or where a first segment is still being written
-    # (loads.csv.partial and no summary yet); otherwise the kept record.
-    whole_rows = (os.path.exists(os.path.join(run_dir, run_record.LOADS_FILE)) and
-                  not (summary or {}).get("loads_csv_from_s")) or (path is not None and summary is None)
-    if not whole_rows and os.path.exists(os.path.join(run_dir, run_record.LOAD_BINS_FILE)):
+    if not run_record.rows_are_whole_run(run_dir, summary) and os.path.exists(os.path.join(run_dir, run_record.LOAD_BINS_FILE)):
         # A clone's copy of a run (loads.csv is not kept) or a run resumed there: the kept record.
         try:
             bins = run_record.read_load_bins(run_dir)

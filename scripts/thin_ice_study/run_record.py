@@ -41,6 +41,16 @@ def loads_path(run_dir):
     return path + ".partial" if os.path.exists(path + ".partial") else None
 
 
+def rows_are_whole_run(run_dir, summary):
+    """True where the run's loads.csv holds every row of the run (not only the segments after a
+    resumption from the kept record, summary.json's loads_csv_from_s > 0), or where a first segment
+    is still being written (loads.csv.partial and no summary yet): the readers take its rows then,
+    and load_bins.csv otherwise."""
+    if summary is None:
+        return loads_path(run_dir) is not None
+    return os.path.exists(os.path.join(run_dir, LOADS_FILE)) and not summary.get("loads_csv_from_s")
+
+
 def read_summary(run_dir):
     """summary.json as a dict, or None where the run has none yet."""
     path = os.path.join(run_dir, SUMMARY_FILE)

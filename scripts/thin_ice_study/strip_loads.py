@@ -2,7 +2,6 @@
 scripts/study strip_vs_full): one reader and one set of window means."""
 import collections
 import math
-import os
 
 from . import run_record
 
@@ -22,8 +21,7 @@ def read_run(path):
     load_bins.csv stand for the rows: their end lengths, mean and greatest loads, and the last
     bin's bond counts."""
     summary = run_record.read_summary(path)
-    whole_rows = os.path.exists(os.path.join(path, run_record.LOADS_FILE)) and not (summary or {}).get("loads_csv_from_s")
-    if summary is not None and not whole_rows:
+    if summary is not None and not run_record.rows_are_whole_run(path, summary):
         bins = run_record.read_load_bins(path)
         alpha = summary["calibration_factor"]
         last = {"broken_bonds": bins["broken_bonds"][-1], "intact_bonds": bins["intact_bonds"][-1]} if bins["bin"] else None

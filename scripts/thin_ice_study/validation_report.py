@@ -14,6 +14,7 @@ in the folder (nothing to report, the old report left as it was).
 """
 import functools
 import argparse
+import json
 import os
 import sys
 
@@ -43,7 +44,6 @@ def hand_written(path):
 def check_runs(root):
     """Ends the script (exit status 2) where the runs folder holds no run, or a summary that is not one
     of `thin_ice run`: the report would say what was not measured."""
-    import json
     found = 0
     for series in SERIES:
         for _, path in runs_of(root, series):

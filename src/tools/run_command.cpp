@@ -480,30 +480,22 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
       // A loads.csv of the whole history: its rows are the exact record; the first failure is
       // taken from them, and the kept record must hold as many rows (two continuations of one run
       // to the same time, say one pulled and one made here, are not mixed).
-      if (summary.loads_csv_from == 0.0) {
-        cont.first_failure_length = thin_ice::firstFailureLength(history.pushed_length, history.broken_bonds);
-        if (!std::filesystem::exists(bins_path)) {
-          cont.bins = thin_ice::binLoadHistory(history);
-        } else {
-          const long kept = thin_ice::LoadBinner(thin_ice::readLoadBins(bins_path)).samples();
-          if (kept != static_cast<long>(history.time.size())) {
-            throw ResumeError(bins_path + " holds " + std::to_string(kept) + " rows but " + csv_path + " " +
-                              std::to_string(history.time.size()) + ": they are not one record");
-          }
-        }
-      } else if (!std::filesystem::exists(bins_path)) {
-        throw ResumeError("no " + bins_path + ", and " + csv_path + " holds the rows from t = " +
-                          jsonNumber(summary.loads_csv_from) + " s on only: the run's kept record is missing");
+      cont.bins = thin_ice::readRunLoadBins(dir);  // load_bins.csv, or the bins of a whole loads.csv
+      const long kept = thin_ice::LoadBinner(cont.bins).samples();
+      if (summary.loads_csv_from == 0.0 && kept != static_cast<long>(history.time.size())) {
+        throw ResumeError(bins_path + " holds " + std::to_string(kept) + " rows but " + csv_path + " " +
+                          std::to_string(history.time.size()) + ": they are not one record");
       }
+      cont.first_failure_length = summary.loads_csv_from == 0.0
+                                      ? thin_ice::firstFailureLength(history.pushed_length, history.broken_bonds)
+                                      : summary.first_failure_length;
     } else {
       cont.previous_csv = header;
       cont.loads_csv_from = sim->time();
+      cont.bins = thin_ice::readLoadBins(bins_path);
+      cont.first_failure_length = summary.first_failure_length;
     }
-    if (std::filesystem::exists(bins_path)) cont.bins = thin_ice::readLoadBins(bins_path);
-    if (cont.bins.empty()) {
-      throw ResumeError((std::filesystem::exists(bins_path) ? bins_path : csv_path) + " holds no rows to go on from");
-    }
-    if (!(has_csv && summary.loads_csv_from == 0.0)) cont.first_failure_length = summary.first_failure_length;
+    if (cont.bins.empty()) throw ResumeError(bins_path + " holds no rows to go on from");
     const thin_ice::LoadBin& last = cont.bins.back();
     cont.rows = thin_ice::LoadBinner(cont.bins).samples();
     cont.last.time = last.time;
