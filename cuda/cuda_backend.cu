@@ -126,6 +126,12 @@ __global__ void contactForces(int capacity, RunScalars* run, ModelConstants c, c
     reference[p] = 0.0;
     return;
   }
+  // One slab above the other, with no reference overlap to follow: no force, whatever the clip
+  // would give (contact.hpp; the CPU backend does the same).
+  if (contactSkipsClip(motion[i].z, motion[j].z, c.contact.thickness, reference[p])) {
+    touching[p] = 0;
+    return;
+  }
   // Apart by more than the clip's rounding along the edge that kept them apart last time: the
   // clip would give no overlap (pair_separation.hpp; the CPU backend does the same).
   const Vec2* wi = world + (size_t)i * kV;

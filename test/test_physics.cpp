@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <random>
 #include <vector>
 
 #include "thin_ice_sim/incidence.hpp"
@@ -253,6 +254,63 @@ TEST(Contact, ANewPairCountsOnlyTheOverlapBeyondItsFirst) {
       demContactForce(intersectConvexPolygons(a.data(), 4, shallow.data(), 4), i, j, iceContact(), second.reference_area);
   EXPECT_NEAR(third.reference_area, 0.2 * 0.005, grid_bound);
   EXPECT_EQ(norm(third.force_on_j), 0.0);
+}
+
+TEST(Contact, SlabsOneAboveTheOtherDoNotTouchButKeepTheirReferenceOverlap) {
+  // j 0.06 m above i (h = 0.05 m): Z = 0, so Eqs. (1) and (3), which both carry Z, give nothing,
+  // though the squares overlap by S = 0.15 x 0.2 = 0.03 m^2 in plan. Not touching, no force.
+  const auto a = square({0.0, 0.0}, 0.2), b = square({0.05, 0.0}, 0.2);
+  const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
+  ASSERT_NEAR(o.area, 0.03, 1e-9);
+  const BodyState i = {{0.0, 0.0}, 0.0, {0, 0}, 0.0, 0.0, 1.84, kSquareInertia};
+  const BodyState j = {{0.05, 0.0}, 0.06, {0.02, -0.01}, -0.1, 0.3, 1.84, kSquareInertia};
+  const PairForce apart = demContactForce(o, i, j, iceContact(), kNoReference);
+  EXPECT_FALSE(apart.touching);
+  EXPECT_EQ(apart.force_on_j.x, 0.0);
+  EXPECT_EQ(apart.force_on_j.y, 0.0);
+  EXPECT_EQ(apart.fz_on_j, 0.0);
+  EXPECT_EQ(apart.reference_area, 0.0);  // none before, none after: the next touch counts all of S
+  // A reference overlap follows S while one slab passes over the other, as for a touching pair:
+  // 0.05 m^2 shrinks to S; a new pair (-1) takes S.
+  EXPECT_EQ(demContactForce(o, i, j, iceContact(), 0.05).reference_area, o.area);
+  EXPECT_EQ(demContactForce(o, i, j, iceContact(), 0.01).reference_area, 0.01);
+  EXPECT_EQ(demContactForce(o, i, j, iceContact(), -1.0).reference_area, o.area);
+  // Exactly one thickness apart is still apart (Z = 0); a micrometre less touches.
+  EXPECT_FALSE(demContactForce(o, i, {j.centroid, 0.05, j.velocity, j.vz, j.wz, j.mass, j.inertia}, iceContact(),
+                               kNoReference).touching);
+  EXPECT_TRUE(demContactForce(o, i, {j.centroid, 0.05 - 1e-6, j.velocity, j.vz, j.wz, j.mass, j.inertia},
+                              iceContact(), kNoReference).touching);
+}
+
+TEST(Contact, APairSkipsItsClipOnlyWhenTheClipCouldChangeNothing) {
+  // contactSkipsClip lets the contact loops write "apart" without clipping: that must be what the
+  // clip and the law would give. Random pairs of squares, overlapping or not, one slab at least a
+  // thickness above the other, no reference overlap: the law gives not touching and S_ref = 0.
+  const double h = iceContact().thickness;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> shift(-0.25, 0.25), turn(0.0, 1.5), rise(h, 3.0 * h);
+  int overlapping = 0;
+  for (int k = 0; k < 500; ++k) {
+    std::vector<Vec2> a = square({0.0, 0.0}, 0.2), b = square({shift(random), shift(random)}, 0.2);
+    const double yaw = turn(random), c = std::cos(yaw), s = std::sin(yaw);
+    const Vec2 centre_b = 0.25 * (b[0] + b[1] + b[2] + b[3]);
+    for (Vec2& v : b) v = centre_b + Vec2{c * (v.x - centre_b.x) - s * (v.y - centre_b.y), s * (v.x - centre_b.x) + c * (v.y - centre_b.y)};
+    const double dz = (k % 2 == 0 ? 1.0 : -1.0) * rise(random);
+    ASSERT_TRUE(contactSkipsClip(0.0, dz, h, 0.0));
+    const PolygonOverlap o = intersectConvexPolygons(a.data(), 4, b.data(), 4);
+    overlapping += o.area > 0.0 ? 1 : 0;
+    const BodyState i = {{0.0, 0.0}, 0.0, {0.01, 0}, 0.02, 0.1, 1.84, kSquareInertia};
+    const BodyState j = {centre_b, dz, {-0.03, 0.01}, -0.05, -0.2, 1.84, kSquareInertia};
+    const PairForce f = demContactForce(o, i, j, iceContact(), 0.0);
+    EXPECT_FALSE(f.touching) << "pair " << k;
+    EXPECT_EQ(f.reference_area, 0.0) << "pair " << k;
+  }
+  EXPECT_GT(overlapping, 100) << "too few overlapping pairs: nothing was tested";
+  // Not skipped: a vertical overlap (Z > 0), or a reference overlap to follow (new pair, S_ref > 0).
+  EXPECT_FALSE(contactSkipsClip(0.0, 0.99 * h, h, 0.0));
+  EXPECT_FALSE(contactSkipsClip(0.0, 2.0 * h, h, -1.0));
+  EXPECT_FALSE(contactSkipsClip(0.0, 2.0 * h, h, 1e-4));
+  EXPECT_TRUE(contactSkipsClip(0.3, 0.3 - 1.5 * h, h, 0.0));  // j below i
 }
 
 TEST(Friction, ViscousBranchIsBoundedSoThatAnExplicitStepCannotReverseTheSlip) {

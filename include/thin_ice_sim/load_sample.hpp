@@ -30,7 +30,7 @@ struct LoadSample {
   double pusher_force = 0.0;           ///< [N] force the pusher exerts on the ice, +x
   int intact_bonds = 0;
   int broken_bonds = 0;
-  int contacts = 0;                    ///< DEM contacts with positive overlap in the last step
+  int contacts = 0;                    ///< DEM contacts whose slabs touch (S > 0 and Z > 0) in the last step
 };
 
 /// One cell as the node and the runner see it.

@@ -272,6 +272,12 @@ class CpuBackend final : public Backend {
         contact_reference_[p] = 0.0;
         continue;
       }
+      // One slab above the other, with no reference overlap to follow: no force, whatever the
+      // clip would give (contact.hpp).
+      if (contactSkipsClip(motion_[i].z, motion_[j].z, model_.constants.contact.thickness, contact_reference_[p])) {
+        contact_touching_[p] = 0;
+        continue;
+      }
       const Vec2* wi = &world_[static_cast<size_t>(i) * kV];
       const Vec2* wj = &world_[static_cast<size_t>(j) * kV];
       const int ni = model_.vertex_count[i], nj = model_.vertex_count[j];

@@ -69,7 +69,7 @@ struct PairForce {
   double fz_on_j;     ///< [N] vertical force on j; i gets the opposite
   Vec2 point;         ///< [m] where it acts (for the yaw moments of Eq. 4)
   double reference_area;  ///< S_ref [m^2] after this step, carried to the next
-  bool touching;      ///< S > 0
+  bool touching;      ///< the slabs touch: S > 0 and Z > 0 (a force may act)
 };
 
 /// What the per-cell gather needs of one pair's force, a contact's or a bond's, stored per pair
@@ -94,6 +94,21 @@ TIS_HD double inverseSlipMass(const BodyState& b, Vec2 point) {
   return 1.0 / b.mass + dot(r, r) / b.inertia;
 }
 
+/// Vertical overlap Z [m] of two slabs h thick whose mid-planes are at z_i and z_j, Eq. (2):
+/// max(0, h - |z_j - z_i|).
+TIS_HD double verticalOverlap(double z_i, double z_j, double h) { return maxOf(0.0, h - fabs(z_j - z_i)); }
+
+/// Whether a listed pair may go without its polygon clip this step: nothing the clip could give
+/// would change what the pair does or carries forward. Its slabs do not overlap vertically
+/// (Z = 0, Eq. 2), so Eqs. (1) and (3), which both carry Z, give no force and demContactForce
+/// returns "not touching" whatever S is; and it holds no reference overlap (S_ref = 0), which only
+/// the clip's S could change. A pair that holds one (new to the list, or S_ref > 0) still clips,
+/// so that S_ref follows S while one slab passes over the other. In a grown pile most pairs whose
+/// polygons overlap are pieces stacked one above the other (docs/performance.md).
+TIS_HD bool contactSkipsClip(double z_i, double z_j, double h, double reference_area) {
+  return reference_area == 0.0 && !(verticalOverlap(z_i, z_j, h) > 0.0);
+}
+
 /// Force between cells i and j from their polygon overlap (`overlap` = intersection of i's and
 /// j's polygons, normal from i to j). `reference_area` is the pair's S_ref from the previous step,
 /// or negative for a pair new to the contact list (its present overlap becomes S_ref).
@@ -103,13 +118,18 @@ TIS_HD PairForce demContactForce(const PolygonOverlap& overlap, const BodyState&
   f.force_on_j = {0.0, 0.0};
   f.fz_on_j = 0.0;
   f.point = overlap.centroid;
-  f.touching = overlap.area > 0.0;
+  f.touching = false;
   f.reference_area = 0.0;  // apart: the next touch starts from no overlap
-  if (!f.touching) return f;
+  if (!(overlap.area > 0.0)) return f;
   f.reference_area = reference_area < 0.0 ? overlap.area : minOf(reference_area, overlap.area);
+  const double h = c.thickness;
+  // One slab wholly above the other: no face touches (Eqs. 1 and 3 both carry Z), but S_ref
+  // follows the overlap as for a touching pair, so that it is the same when they meet.
+  const double overlap_z = verticalOverlap(i.z, j.z, h);
+  if (!(overlap_z > 0.0)) return f;
+  f.touching = true;
   const double area = overlap.area - f.reference_area;  // S - S_ref >= 0 [m^2]
 
-  const double h = c.thickness;
   const double dz = j.z - i.z;
   const double offset = fabs(dz) / h;
   const double k_h = smoothing(offset, c.exponent_h);
@@ -124,7 +144,6 @@ TIS_HD PairForce demContactForce(const PolygonOverlap& overlap, const BodyState&
   // two slabs at different heights touch over Z, not h (equal at dz = 0); the depth is the
   // shallower of S/L and Z. Damping of stiffness k = K_n E' Z. (The face h and depth S/L as
   // printed shattered the sheet: docs/model.md, "Readings tried and rejected".)
-  const double overlap_z = maxOf(0.0, h - fabs(dz));
   const double stiffness_h = k_h * c.plane_modulus * overlap_z;
   const double depth = minOf(area / overlap.chord_length, overlap_z);
   double normal = stiffness_h * depth;
