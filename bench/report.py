@@ -19,6 +19,7 @@ import json
 import math
 import os
 import re
+import statistics
 import sys
 
 import matplotlib
@@ -331,6 +332,29 @@ def pile_section(run, lines):
         lines += [f"| {r['threads']} | {r['cells']} | {r['contacts']} | {r['steps']} | {r['step [us]']} | "
                   f"{r['real-time factor']} |" for r in rows]
         lines.append("")
+    pile_against_reference(run, lines)
+
+
+def pile_against_reference(run, lines):
+    """The pile on one thread, this tree against the reference commit, timed in turn (scripts/bench):
+    the ratio of each turn's two steps, and their median."""
+    path = os.path.join(run, "pile_against_reference.csv")
+    if not os.path.exists(path):
+        return
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    reference = [r for r in rows if r["build"] == "reference"]
+    current = [r for r in rows if r["build"] == "current"]
+    if not reference or len(reference) != len(current):
+        fail(f"{path}: {len(reference)} reference and {len(current)} current timings; allowed: as many of each, at least one")
+    before = [float(r["step_us"]) for r in reference]
+    after = [float(r["step_us"]) for r in current]
+    ratios = [b / a for b, a in zip(before, after)]
+    lines += [f"The same state on one thread, this tree ({current[0]['commit']}) against {reference[0]['commit']}, both built",
+              "alike (plain CMake, no ROS, no CUDA) and timed in turn:", "",
+              "| turn | step before [us] | step now [us] | times faster |", "|---:|---:|---:|---:|"]
+    lines += [f"| {k + 1} | {b:.0f} | {a:.0f} | {r:.2f} |" for k, (b, a, r) in enumerate(zip(before, after, ratios))]
+    lines += ["", f"Median: **{statistics.median(ratios):.2f} times faster** than {reference[0]['commit']}.", ""]
 
 
 def fail(message):
