@@ -2,14 +2,18 @@
 """The one program's dispatch: `thin_ice` alone prints its commands on stderr (exit status 2),
 `thin_ice --help` (or `help`, `-h`) on stdout (0), and an unknown command or probe is one line
 naming those allowed (2); every command and probe answers --help with its own usage (0), and
-`thin_ice resume` without a run directory first is one line (2).
+`thin_ice resume` without a run directory first is one line (2); `thin_ice parameters` prints a
+scenario's resolved parameters as a scenario file that loads back to the same text (0), and a bad
+argument or value is one line (2).
 
     test_command_line.py THIN_ICE   (THIN_ICE: the thin_ice program)
 """
+import os
 import subprocess
 import sys
+import tempfile
 
-COMMANDS = ["run", "resume", "sheet", "analyse", "probe"]
+COMMANDS = ["run", "resume", "sheet", "analyse", "parameters", "probe"]
 PROBES = ["edge-check", "edge-balance", "bond-offset", "profiles"]
 
 
@@ -57,9 +61,37 @@ def main():
            lambda err: len(err.splitlines()) == 1 and err.startswith("thin_ice resume: "), "a flag first")
     # Each command's own usage names it as it is called now.
     for args, usage in ((["run"], "usage: thin_ice run "), (["resume"], "usage: thin_ice run "),
-                        (["sheet"], "usage: thin_ice sheet "), (["analyse"], "usage: thin_ice analyse ")) + tuple(
+                        (["sheet"], "usage: thin_ice sheet "), (["analyse"], "usage: thin_ice analyse "),
+                        (["parameters"], "usage: thin_ice parameters ")) + tuple(
                             (["probe", p], f"usage: thin_ice probe {p} ") for p in PROBES):
         expect(args + ["--help"], 0, lambda out, usage=usage: out.startswith(usage), None, "its usage")
+    # thin_ice parameters: quick.yaml as resolved (M-2's ice on a strip), printed as a scenario file
+    # that, loaded again, prints the same parameters; E_v worked out by its rule when asked.
+    quick = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "config", "scenarios", "quick.yaml")
+    printed = call([thin_ice, "parameters", "--scenario", quick, "--set", "sheet.seed=3"])
+    lines = printed.stdout.splitlines()
+    if printed.returncode != 0 or "  vertical_modulus: 1276000" not in lines or "  seed: 3" not in lines or \
+            "  thickness: 0.051" not in lines:
+        failures.append(f"thin_ice parameters quick.yaml: exit status {printed.returncode}, stdout {printed.stdout[:300]!r}")
+    else:
+        with tempfile.TemporaryDirectory() as tmp:
+            resolved = os.path.join(tmp, "resolved.yaml")
+            with open(resolved, "w") as f:
+                f.write(printed.stdout)
+            again = call([thin_ice, "parameters", "--scenario", resolved])
+            if again.returncode != 0 or again.stdout.splitlines()[1:] != lines[1:]:
+                failures.append(f"the printed parameters loaded again: exit status {again.returncode}, "
+                                f"{again.stdout[:200]!r}, differs: {again.stdout.splitlines()[1:] != lines[1:]}")
+    ruled = call([thin_ice, "parameters", "--scenario", quick, "--set", "ice.vertical_modulus_floating_plate_multiple=4"])
+    if ruled.returncode != 0 or "  vertical_modulus_floating_plate_multiple: 4" not in ruled.stdout.splitlines() or \
+            "  vertical_modulus: 1276000" in ruled.stdout.splitlines():
+        failures.append(f"thin_ice parameters with the rule of E_v: exit status {ruled.returncode}, {ruled.stdout[:300]!r}")
+    expect(["parameters", "--scenario", quick, "--set", "ice.thickness=-1"], 2, lambda out: out == "",
+           lambda err: len(err.splitlines()) == 1 and "ice.thickness" in err, "a value out of range")
+    expect(["parameters", "--scenario", quick, "--until-time", "1"], 2, lambda out: out == "",
+           lambda err: err.startswith("thin_ice parameters: unexpected argument '--until-time'"), "a run's flag")
+    expect(["parameters"], 2, lambda out: out == "",
+           lambda err: err.startswith("thin_ice parameters: --scenario FILE is required"), "no scenario")
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("OK: the commands and probes listed and dispatched, unknown names refused in one line, each usage as called")

@@ -163,6 +163,50 @@ def main():
         if abs(ss["load"]["peak_at_m"] - sw["load"]["peak_at_m"]) > 1e-9:
             failures.append(f"peak at {ss['load']['peak_at_m']} m after resuming, {sw['load']['peak_at_m']} in one go")
 
+        # A run records its whole parameter set, and a resumption keeps it whatever became of the
+        # scenario file: a copy of quick.yaml, run to 0.4 s, then changed (ice-ice friction 0.3 ->
+        # 0.5, E_v from its stated value to the floating-plate rule, a comment). Resumed as it is,
+        # the run keeps its own values and writes the one-go run's rows; resumed with
+        # --accept-changed-scenario, it takes the file's, and its rows after 0.4 s differ.
+        quick_copy = os.path.join(tmp, "quick_kept.yaml")
+        shutil.copy(os.path.join(source, "config/scenarios/quick.yaml"), quick_copy)
+        copy_args = ["--scenario", quick_copy] + scenario[2:]
+        kept, taken = os.path.join(tmp, "kept_params"), os.path.join(tmp, "taken_params")
+        for d in (kept, taken):
+            done = run(thin_ice, copy_args + ["--until-time", "0.4", "--out", d])
+            if done.returncode != 0:
+                sys.exit(f"FAIL: the run to resume after its file changed: exit status {done.returncode}: {done.stderr.strip()}")
+        recorded = json.load(open(os.path.join(kept, "summary.json"))).get("parameters", {})
+        if recorded.get("ice.friction_ice_ice") != "0.3" or "ice.vertical_modulus" not in recorded or \
+                "sheet.seed" not in recorded or "ice.vertical_modulus_floating_plate_multiple" in recorded:
+            failures.append(f"summary.json parameters: {recorded}; expected every key, friction 0.3, no unused rule")
+        with open(quick_copy) as f:
+            text = f.read()
+        text = re.sub(r"(?m)^  friction_ice_ice: \S+", "  friction_ice_ice: 0.5", text)
+        text = re.sub(r"(?m)^  vertical_modulus: \S+", "  vertical_modulus_floating_plate_multiple: 4", text)
+        with open(quick_copy, "w") as f:
+            f.write(text + "# changed after the run\n")
+        kept_done = run(thin_ice, ["resume", kept, "--until-time", "0.8"])
+        taken_done = run(thin_ice, ["resume", taken, "--accept-changed-scenario", "--until-time", "0.8"])
+        kept_rows = open(os.path.join(kept, "loads.csv")).read().splitlines()
+        taken_rows = open(os.path.join(taken, "loads.csv")).read().splitlines()
+        sk_params = json.load(open(os.path.join(kept, "summary.json"))).get("parameters", {})
+        st_params = json.load(open(os.path.join(taken, "summary.json"))).get("parameters", {})
+        if (kept_done.returncode != 0 or "the run keeps its own" not in kept_done.stderr or
+                "recorded no value" in kept_done.stderr or
+                "ice.friction_ice_ice 0.5 (the run's: 0.3)" not in kept_done.stderr or kept_rows != whole_rows or
+                sk_params != recorded):
+            failures.append(f"resumed after its file changed: exit status {kept_done.returncode}, stderr "
+                            f"{kept_done.stderr.strip()[-300:]!r}, rows as in one go: {kept_rows == whole_rows}, "
+                            f"parameters kept: {sk_params == recorded}")
+        if (taken_done.returncode != 0 or "the file's values taken" not in taken_done.stderr or
+                st_params.get("ice.friction_ice_ice") != "0.5" or
+                st_params.get("ice.vertical_modulus_floating_plate_multiple") != "4" or
+                taken_rows[:21] != whole_rows[:21] or taken_rows[21:] == whole_rows[21:]):
+            failures.append(f"resumed with --accept-changed-scenario after its file changed: exit status "
+                            f"{taken_done.returncode}, stderr {taken_done.stderr.strip()[-300:]!r}, friction "
+                            f"{st_params.get('ice.friction_ice_ice')}; expected the file's values from 0.4 s on")
+
         # Refusals: nothing in the directories changes.
         def contents(directory):
             return {f: open(os.path.join(directory, f), "rb").read() for f in sorted(os.listdir(directory))

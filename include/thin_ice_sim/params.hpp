@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 
 #include "thin_ice_sim/ice_sheet.hpp"
 
@@ -17,10 +18,16 @@ struct IceParams {
   double compressive_strength = 130e3;  ///< sigma_comp [Pa]
   double youngs_modulus = 328e6;        ///< E [Pa], horizontal
   double vertical_modulus = 328e6;      ///< E_v [Pa]
+  /// E_v as a multiple of the floating plate's (physics/bond.hpp, floatingPlateVerticalModulus)
+  /// [-]; NaN: E_v is given as a value. The loader works E_v out from it (scenario.cpp).
+  double vertical_modulus_floating_plate_multiple = std::numeric_limits<double>::quiet_NaN();
   double poisson_ratio = 0.3;           ///< nu [-], in [0, 0.5)
   double smoothing_exponent_h = 1.0;    ///< n of K_n (Eq. 6) for horizontal forces [-]
   double smoothing_exponent_v = 1.0;    ///< n of K_v (Eq. 6) for vertical forces [-]
   double compression_coupling = 0.0;    ///< k of Eq. (13) [-]
+  /// k as a fraction of sigma_f / sigma_comp (the paper: k ~ sigma_f / sigma_comp) [-]; NaN: k is
+  /// given as a value. The loader works k out from it (scenario.cpp).
+  double compression_coupling_strength_fraction = std::numeric_limits<double>::quiet_NaN();
   double friction_ice_ice = 0.3;        ///< Coulomb coefficient between cells [-]
   double contact_damping_ratio = 0.2;   ///< zeta of DEM contacts (fraction of critical) [-]
   double bond_damping_ratio = 0.2;      ///< zeta of RMIB bonds [-]

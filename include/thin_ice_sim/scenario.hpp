@@ -46,6 +46,16 @@ bool switchableOnResume(const std::string& key);
 /// Every key switchableOnResume allows, in the order of the scenario format.
 std::vector<std::string> switchableOnResumeKeys();
 
+/// One key of the scenario format and its value in a parameter set.
+struct ParameterValue {
+  std::string key;    ///< "section.key"
+  std::string value;  ///< as the loader reads it back to the same bits ("0.052", "true", "jittered_grid")
+};
+
+/// Every key of the scenario format with its value in `params`, in the order of the format: the
+/// whole parameter set of a run, which "section.key=value" overrides give back bit for bit.
+std::vector<ParameterValue> scenarioParameters(const Params& params);
+
 /// Checks the physical and numerical ranges of `params` (everything that can be checked without
 /// building the sheet); `source` prefixes the message. Throws ScenarioError.
 void validateParams(const Params& params, const std::string& source);

@@ -27,7 +27,7 @@ MATRIX OPTIONS
                     Slurm the task then requeues itself and resumes (default there: 14400 s)
   --resume          go on with each run from its checkpoint in the records (RECORDS/RUN/
                     checkpoint.bin) to the new --until-length, instead of starting it again
-  --accept-changed-scenario  with --resume: go on although the scenario file's text changed
+  --accept-changed-scenario  with --resume: take the scenario file's values where they differ from a run's own
                     where the run's parameters did not (the flag of that name of `thin_ice run`)
   --keep-existing   skip a run whose RECORDS/RUN/summary.json says it completed to the same length
 WHERE

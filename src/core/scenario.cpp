@@ -56,6 +56,7 @@ namespace thin_ice {
 namespace {
 
 using scenario_keys::BadValue;
+using scenario_keys::deriveRuleValues;
 using scenario_keys::describe;
 using scenario_keys::Field;
 using scenario_keys::findField;
@@ -196,8 +197,10 @@ void checkRequiredKeys(const std::set<std::string>& keys, const std::string& pat
   for (const Section& s : sections()) {
     for (const Field& f : s.fields) {
       if (!f.required || keys.count(s.name + "." + f.key)) continue;
+      if (f.alternative && keys.count(s.name + "." + f.alternative)) continue;
       if (missing.empty()) {
-        missing = "missing required key " + s.name + "." + f.key + " (expected " + f.expected + ")";
+        missing = "missing required key " + s.name + "." + f.key + " (expected " + f.expected +
+                  (f.alternative ? std::string(", or ") + s.name + "." + f.alternative + " for its rule" : "") + ")";
       } else {
         others += (others.empty() ? "; also missing: " : ", ") + s.name + "." + f.key;
       }
@@ -322,11 +325,15 @@ std::string rangeText(const Field& f) {
 }
 
 /// Every numeric key of the table within its physical range, in the table's order.
-void checkRanges(const Params& p) {
+/// The ranges of every number; with `before_rules`, those of the values rules will derive are left
+/// for after deriveRuleValues, so that a bad input of a rule is blamed on its own key.
+void checkRanges(const Params& p, bool before_rules = false) {
   for (const Section& section : sections()) {
     for (const Field& f : section.fields) {
       if (!f.get) continue;
+      if (before_rules && f.derived && f.derived(p)) continue;
       const double v = f.get(p);
+      if (f.rule_factor && std::isnan(v)) continue;  // the value is given, not derived
       const Range& r = f.range;
       const bool above_lo = r.lo_open ? v > r.lo : v >= r.lo;
       const bool below_hi = r.hi_open ? v < r.hi : v <= r.hi;
@@ -385,6 +392,17 @@ std::vector<std::string> switchableOnResumeKeys() {
   return keys;
 }
 
+std::vector<ParameterValue> scenarioParameters(const Params& params) {
+  std::vector<ParameterValue> values;
+  for (const Section& s : sections()) {
+    for (const Field& f : s.fields) {
+      const std::string value = f.show(params);
+      if (!value.empty()) values.push_back({s.name + "." + f.key, value});  // an unused rule factor: nothing
+    }
+  }
+  return values;
+}
+
 bool switchableOnResume(const std::string& key) {
   const std::vector<std::string> keys = switchableOnResumeKeys();
   return std::find(keys.begin(), keys.end(), key) != keys.end();
@@ -404,6 +422,8 @@ Scenario loadScenario(const std::string& path, const std::vector<std::string>& o
     throw ScenarioError(path + ": " + e.what());
   }
   try {
+    checkRanges(scenario.params, /*before_rules=*/true);
+    deriveRuleValues(scenario.params);
     checkParams(scenario.params);
   } catch (const RangeError& e) {
     std::string by;

@@ -4,10 +4,14 @@
 
 #include <cstdint>
 #include <cstdio>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <type_traits>
 
 #include "thin_ice_sim/ice_sheet.hpp"
+#include "thin_ice_sim/physics/bond.hpp"
 #include "thin_ice_sim/scenario.hpp"
 
 namespace thin_ice {
@@ -90,11 +94,33 @@ constexpr int kMaxThreads = 1024;
 
 constexpr bool kRequired = true;
 
+// ----- Values as text that reads back to the same bits -------------------------------------
+
+/// The shortest of 15, 16 and 17 significant digits that reads back to v ("0.052", not
+/// "0.051999999999999998"); 17 always does.
+std::string showValue(double v) {
+  char text[32];
+  for (int digits = 15; digits <= 17; ++digits) {
+    std::snprintf(text, sizeof text, "%.*g", digits, v);
+    if (std::strtod(text, nullptr) == v) break;
+  }
+  return text;
+}
+std::string showValue(int v) { return std::to_string(v); }
+std::string showValue(std::uint64_t v) { return std::to_string(v); }
+std::string showValue(bool v) { return v ? "true" : "false"; }
+std::string showValue(SeedLayout v) { return toString(v); }
+
 template <class S, class T, class Convert>
 Field field(S Params::*section, T S::*member, const char* key, const char* expected,
             Convert convert, bool required) {
-  return {key, expected, required,
-          [=](Params& p, const YAML::Node& n) { (p.*section).*member = convert(n); }, {}, {}};
+  Field f;
+  f.key = key;
+  f.expected = expected;
+  f.required = required;
+  f.set = [=](Params& p, const YAML::Node& n) { (p.*section).*member = convert(n); };
+  f.show = [=](const Params& p) { return showValue((p.*section).*member); };
+  return f;
 }
 template <class S>
 Field number(S Params::*section, double S::*member, const char* key, Range range, bool required = false) {
@@ -115,6 +141,28 @@ template <class S>
 Field flag(S Params::*section, bool S::*member, const char* key) {
   return field(section, member, key, "true or false", viaYaml<bool>, false);
 }
+/// A value that a rule may derive instead (`factor`, NaN when unused), and the rule's factor: each
+/// setter clears the other's way, so that whichever of the two the file chain and the overrides
+/// give last holds (a file's rule, a --set value over it; or the other way round).
+Field ruledNumber(double IceParams::*member, double IceParams::*factor, const char* key, Range range,
+                  const char* factor_key) {
+  Field f = number(&Params::ice, member, key, range, kRequired);
+  f.set = [=](Params& p, const YAML::Node& n) {
+    p.ice.*member = viaYaml<double>(n);
+    p.ice.*factor = std::numeric_limits<double>::quiet_NaN();
+  };
+  f.derived = [=](const Params& p) { return !std::isnan(p.ice.*factor); };
+  f.alternative = factor_key;
+  return f;
+}
+Field ruleFactor(double IceParams::*factor, const char* key, Range range, const char* value_key) {
+  Field f = number(&Params::ice, factor, key, range);
+  f.show = [=](const Params& p) { return std::isnan(p.ice.*factor) ? std::string() : showValue(p.ice.*factor); };
+  f.rule_factor = true;
+  f.alternative = value_key;
+  return f;
+}
+
 /// Marks a key that `thin_ice run --resume DIR --set` may change under a run that is under way:
 /// the laws of the ice, the water and the rigid planes (stiffness, friction), the friction's
 /// regularisation, the thread count, and the depth of the false bottom (not in the paper, so the
@@ -160,13 +208,22 @@ const std::vector<Section>& sections() {
         onResume(number(&P::ice, &IceParams::flexural_strength, "flexural_strength", kStrength, kRequired)),
         onResume(number(&P::ice, &IceParams::compressive_strength, "compressive_strength", kStrength, kRequired)),
         onResume(number(&P::ice, &IceParams::youngs_modulus, "youngs_modulus", kModulus, kRequired)),
-        onResume(number(&P::ice, &IceParams::vertical_modulus, "vertical_modulus", kModulus, kRequired)),
+        onResume(ruledNumber(&IceParams::vertical_modulus, &IceParams::vertical_modulus_floating_plate_multiple,
+                             "vertical_modulus", kModulus, "vertical_modulus_floating_plate_multiple")),
+        onResume(ruleFactor(&IceParams::vertical_modulus_floating_plate_multiple,
+                            "vertical_modulus_floating_plate_multiple",
+                            {0.0, 1e6, kOpen, kClosed, "", "E_v as a multiple of the floating plate's (docs/model.md)"},
+                            "vertical_modulus")),
         onResume(number(&P::ice, &IceParams::poisson_ratio, "poisson_ratio",
                         {0.0, 0.5, kClosed, kOpen, "", "3E/(1-nu) and G = E/(2(1+nu)) need nu in [0, 0.5)"},
                         kRequired)),
         onResume(number(&P::ice, &IceParams::smoothing_exponent_h, "smoothing_exponent_h", kExponent, kRequired)),
         onResume(number(&P::ice, &IceParams::smoothing_exponent_v, "smoothing_exponent_v", kExponent, kRequired)),
-        onResume(number(&P::ice, &IceParams::compression_coupling, "compression_coupling", kCoupling, kRequired)),
+        onResume(ruledNumber(&IceParams::compression_coupling, &IceParams::compression_coupling_strength_fraction,
+                             "compression_coupling", kCoupling, "compression_coupling_strength_fraction")),
+        onResume(ruleFactor(&IceParams::compression_coupling_strength_fraction, "compression_coupling_strength_fraction",
+                            {0.0, 10.0, kClosed, kClosed, "", "k of Eq. (13) as a fraction of sigma_f / sigma_comp"},
+                            "compression_coupling")),
         onResume(number(&P::ice, &IceParams::friction_ice_ice, "friction_ice_ice", kFriction)),
         onResume(number(&P::ice, &IceParams::contact_damping_ratio, "contact_damping_ratio", kDamping)),
         onResume(number(&P::ice, &IceParams::bond_damping_ratio, "bond_damping_ratio", kDamping))}},
@@ -255,6 +312,19 @@ const std::vector<Section>& sections() {
 }
 
 /// The section called `name`; throws ScenarioError (after `where`) when there is none.
+void deriveRuleValues(Params& p) {
+  IceParams& ice = p.ice;
+  if (!std::isnan(ice.vertical_modulus_floating_plate_multiple)) {
+    ice.vertical_modulus = ice.vertical_modulus_floating_plate_multiple *
+                           floatingPlateVerticalModulus(ice.youngs_modulus, ice.poisson_ratio, ice.thickness,
+                                                        p.water.density, p.water.gravity);
+  }
+  if (!std::isnan(ice.compression_coupling_strength_fraction)) {
+    ice.compression_coupling = ice.compression_coupling_strength_fraction * ice.flexural_strength /
+                               ice.compressive_strength;
+  }
+}
+
 const Section& findSection(const std::string& name, const std::string& where) {
   std::string allowed;
   for (const Section& s : sections()) {

@@ -40,17 +40,32 @@ struct Range {
 };
 
 using Setter = std::function<void(Params&, const YAML::Node&)>;
+/// The value as scenario text that reads back to the same bits (doubles to 17 digits).
+using Shower = std::function<std::string(const Params&)>;
 
 struct Field {
   std::string key;
   std::string expected;  ///< "a number", "an integer", ... for the messages
-  bool required;
+  bool required = false;
   Setter set;                                ///< throws BadValue
+  Shower show;                               ///< the value as the loader would read it back
   std::function<double(const Params&)> get;  ///< the value, for the range check (numbers only)
-  Range range;                               ///< unused where `get` is empty
+  Range range{};                             ///< unused where `get` is empty
   bool integer = false;                      ///< the range reads "integer in [lo, hi]"
   bool switchable = false;                   ///< may change at a resumption (switchableOnResume)
+  /// A rule's factor (e.g. ice.vertical_modulus_floating_plate_multiple): NaN when the value it
+  /// derives is given as a number instead; then it has no range to check and nothing to show.
+  bool rule_factor = false;
+  /// For a value a rule may derive (e.g. ice.vertical_modulus): whether it is derived in `params`
+  /// (its factor is set), so that its range is checked after deriveRuleValues, not before.
+  std::function<bool(const Params&)> derived;
+  /// A required key is also satisfied by this other key of its section (its rule's factor).
+  const char* alternative = nullptr;
 };
+
+/// Works out the values given by rules (a factor set, not NaN) from the rest of `params`: E_v
+/// (ice.vertical_modulus_floating_plate_multiple) and k (ice.compression_coupling_strength_fraction).
+void deriveRuleValues(Params& params);
 
 struct Section {
   std::string name;

@@ -69,7 +69,8 @@ double csvNumber(const CsvRow& row, const std::string& column, const std::string
   throw std::runtime_error(path + ": column " + column + " holds '" + it->second + "', not a number");
 }
 
-Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, std::string& warning) {
+Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, std::string& warning,
+                         bool* parameters_recorded) {
   const YAML::Node summary = loadSummary(run_dir);
   const std::string file = summary["scenario"]["file"].as<std::string>();
   std::vector<std::string> overrides;
@@ -82,8 +83,41 @@ Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, s
                              ": resume from that directory (the repository root for the shipped runs)");
   }
   Scenario scenario = loadScenario(file, overrides);
-  const std::string run_hash = summary["scenario"]["hash"].as<std::string>();
   warning.clear();
+  const YAML::Node recorded = summary["parameters"];
+  if (parameters_recorded) *parameters_recorded = recorded.IsMap();
+  if (recorded.IsMap()) {
+    std::vector<std::string> kept;
+    std::string differences;
+    for (const ParameterValue& now : scenarioParameters(scenario.params)) {
+      const YAML::Node run_value = recorded[now.key];
+      if (!run_value.IsDefined() || !run_value.IsScalar() || run_value.Scalar() == now.value) continue;
+      differences += (differences.empty() ? "" : ", ") + now.key + " " + now.value + " (the run's: " +
+                     run_value.Scalar() + ")";
+      kept.push_back(now.key + "=" + run_value.Scalar());
+    }
+    if (!differences.empty()) {
+      if (accept_changed_file) {
+        warning = "scenario " + file + " now gives " + differences + "; the file's values taken, as asked";
+      } else {
+        overrides.insert(overrides.end(), kept.begin(), kept.end());
+        scenario = loadScenario(file, overrides);
+        warning = "scenario " + file + " now gives " + differences + "; the run keeps its own (added to its "
+                  "overrides; --accept-changed-scenario takes the file's)";
+      }
+    }
+    // Keys the run has no value of: added to the format after it (or a rule the file now uses).
+    std::string unrecorded;
+    for (const ParameterValue& now : scenarioParameters(scenario.params)) {
+      if (!recorded[now.key].IsDefined()) unrecorded += (unrecorded.empty() ? "" : " ") + now.key;
+    }
+    if (!unrecorded.empty()) {
+      warning += std::string(warning.empty() ? "" : "; ") + "the run recorded no value of " + unrecorded +
+                 ": the file's taken";
+    }
+    return scenario;
+  }
+  const std::string run_hash = summary["scenario"]["hash"].as<std::string>();
   if (scenario.hash != run_hash) {
     const std::string what = "scenario " + file + " has changed since the run (hash " + scenario.hash + ", the run's " +
                              run_hash + ")";

@@ -15,6 +15,9 @@ int sheetCommand(int argc, char** argv);
 /// `thin_ice analyse`: a finished run's load statistics again, as JSON (analyse_command.cpp).
 int analyseCommand(int argc, char** argv);
 
+/// `thin_ice parameters`: a scenario's resolved parameter set, as a scenario file (parameters_command.cpp).
+int parametersCommand(int argc, char** argv);
+
 /// `thin_ice probe edge-check`: cuts near the front edge against P_crit (probe_edge_check.cpp).
 int probeEdgeCheck(int argc, char** argv);
 

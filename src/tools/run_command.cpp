@@ -271,7 +271,14 @@ std::string summaryJson(const Simulation& sim, const Options& o, const RunResult
   for (std::size_t k = 0; k < sc.overrides.size(); ++k) {
     j << (k ? ", " : "") << jsonString(sc.overrides[k]);
   }
-  j << "]},\n  \"backend\": " << jsonString(sim.backendName())
+  // The whole parameter set in force at the end, so that a resumption keeps the run's own values
+  // whatever the scenario file says by then (thin_ice_sim/study/run_directory.hpp).
+  j << "]},\n  \"parameters\": {";
+  const std::vector<thin_ice::ParameterValue> parameters = thin_ice::scenarioParameters(sim.params());
+  for (std::size_t k = 0; k < parameters.size(); ++k) {
+    j << (k ? ", " : "") << jsonString(parameters[k].key) << ": " << jsonString(parameters[k].value);
+  }
+  j << "},\n  \"backend\": " << jsonString(sim.backendName())
     << ", \"backend_note\": " << jsonString(sim.backendNote())
     << ", \"cpu_instruction_set\": " << jsonString(Simulation::cpuInstructionSet())
     << ",\n  \"cells\": " << sim.cellCount() << ", \"time_step_s\": " << num(sim.timeStep())
@@ -372,7 +379,8 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
       throw ResumeError(dir + " ended unhealthy (summary.json); its state is not worth going on from");
     }
     std::string warning;
-    thin_ice::Scenario loaded = thin_ice::loadRunScenario(dir, o.accept_changed_scenario, warning);
+    bool parameters_recorded = false;
+    thin_ice::Scenario loaded = thin_ice::loadRunScenario(dir, o.accept_changed_scenario, warning, &parameters_recorded);
     if (!warning.empty()) std::fprintf(stderr, "thin_ice run: warning: %s\n", warning.c_str());
     run_hash = loaded.hash;
     unswitched = loaded;
@@ -400,8 +408,10 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
                         " but summary.json says the run ended at step " + std::to_string(summary.steps));
     }
     // A changed scenario file changed its hash too; loadRunScenario has already said so. Overrides
-    // switched on here change it by design, so the checkpoint is held against the run's own.
-    if (!o.accept_changed_scenario && checkpoint.scenario_hash != run_hash) {
+    // switched on here change it by design, so the checkpoint is held against the run's own. A run
+    // that recorded its parameters is held to them instead (loadRunScenario), and a file whose
+    // comments changed, or that now states a value the run keeps, changes the hash alone.
+    if (!parameters_recorded && !o.accept_changed_scenario && checkpoint.scenario_hash != run_hash) {
       throw ResumeError(checkpoint_path + " is of scenario hash " + checkpoint.scenario_hash +
                         ", the run's (summary.json) is " + run_hash);
     }

@@ -32,7 +32,7 @@ struct UsageError : std::runtime_error {  // bad command line: exit status 2 wit
 struct Options {
   std::string scenario, out;
   std::string resume;                  // the run directory to go on with (then also `out`)
-  bool accept_changed_scenario = false;  // --resume with a scenario file changed in text, not in the run's parameters
+  bool accept_changed_scenario = false;  // --resume taking the scenario file's values where they differ from the run's
   std::vector<std::string> overrides;  // "section.key=value", applied in order
   double until_length = 0.0;           // [m] pushed length to reach (0: not given)
   bool until_travel_end = false;       // --until-length end: the pusher's whole travel, known once the model is built

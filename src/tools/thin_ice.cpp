@@ -3,6 +3,7 @@
 //   thin_ice resume DIR [ARGS]    the same as thin_ice run --resume DIR [ARGS]
 //   thin_ice sheet ARGS           a Voronoi ice sheet from a YAML file (sheet_command.cpp)
 //   thin_ice analyse RUN_DIR      a finished run's load statistics again (analyse_command.cpp)
+//   thin_ice parameters ARGS      a scenario's resolved parameters, as a scenario file (parameters_command.cpp)
 //   thin_ice probe PROBE ARGS     the investigation probes (probe_*.cpp)
 //   thin_ice [help | --help]      the list of commands
 // `thin_ice COMMAND --help` gives a command's own usage, `thin_ice probe --help` the probes.
@@ -37,6 +38,8 @@ const std::vector<Command> kCommands = {
      thin_ice::cli::sheetCommand, false},
     {"analyse", "RUN_DIR [--write-bins]", "a finished run's load statistics worked out again from its load record (JSON)",
      thin_ice::cli::analyseCommand, false},
+    {"parameters", "--scenario FILE [--set K=V]", "a scenario's whole parameter set as resolved (bases, overrides, rules)",
+     thin_ice::cli::parametersCommand, false},
     {"probe", "PROBE ARGS", "the investigation probes of the model (thin_ice probe --help lists them)",
      probeCommand, false},
 };

@@ -49,6 +49,15 @@ inline double floatingPlateLength(double youngs_modulus, double poisson_ratio, d
              0.25);
 }
 
+/// The vertical modulus E_v [Pa] whose sheet of vertical shear springs, G_v h per unit of area
+/// with G_v = E_v / (2 (1 + nu)), has the floating plate's length l: G_v = rho_w g l^2 / h. The
+/// scenarios take E_v as a multiple of it (docs/model.md, "The choice of E_v").
+inline double floatingPlateVerticalModulus(double youngs_modulus, double poisson_ratio, double thickness,
+                                           double water_density, double gravity) {
+  const double l = floatingPlateLength(youngs_modulus, poisson_ratio, thickness, water_density, gravity);
+  return 2.0 * (1.0 + poisson_ratio) * water_density * gravity * l * l / thickness;
+}
+
 /// Arm [m] of the floating plate's largest moment under an edge line load P: M_max = e^(-pi/4) P l,
 /// 1.11 l from the edge (semi-infinite beam on an elastic foundation). The edge check's
 /// P_crit = sigma_f h^2 / (6 arm) takes it from here.

@@ -22,13 +22,23 @@ std::vector<CsvRow> readCsv(const std::string& path);
 /// is missing or not a number.
 double csvNumber(const CsvRow& row, const std::string& column, const std::string& path);
 
-/// The scenario (file and overrides) named by RUN/summary.json, loaded anew. Relative scenario
-/// paths are taken from the current directory, as `thin_ice run` was given them. Throws
-/// std::runtime_error when RUN is not a run directory, or when the scenario's hash (of the file's
-/// text and the overrides) differs from the run's: its sheet and bonds may not be the run's.
-/// With accept_changed_file the hash is not checked (for a file whose comments alone changed,
-/// which the caller has checked); `warning` then says so.
-Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, std::string& warning);
+/// The scenario (file and overrides) named by RUN/summary.json, loaded anew, with the run's own
+/// parameters. Relative scenario paths are taken from the current directory, as `thin_ice run` was
+/// given them. Throws std::runtime_error when RUN is not a run directory.
+/// - A run that recorded its parameters (summary.json "parameters", written since 2026-12-07)
+///   keeps them: where the file now gives other values, they are added to the overrides, so that
+///   the sheet, the bonds and the laws stay the run's whatever became of the file (derived
+///   values turned into rules, a base file retouched), and `warning` names each key, the file's
+///   value and the run's. With accept_changed_file the file's values are taken instead, and the
+///   warning says which change. A key the run did not record (one added to the format after it)
+///   takes the file's value, and the warning says so.
+/// - An older run (no "parameters") is held to the hash of the file's text and the overrides:
+///   a different hash is refused, since its sheet and bonds may not be the run's, unless
+///   accept_changed_file (for a file whose comments alone changed, which the caller has checked);
+///   `warning` then says so.
+/// `parameters_recorded` says which of the two applied.
+Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, std::string& warning,
+                         bool* parameters_recorded = nullptr);
 
 /// An override given when the run was resumed (`thin_ice run --resume DIR --set ...`): it holds
 /// from that pushed length on, the run before it went without.
