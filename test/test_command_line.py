@@ -3,7 +3,7 @@
 `thin_ice --help` (or `help`, `-h`) on stdout (0), and an unknown command or probe is one line
 naming those allowed (2); every command and probe answers --help with its own usage (0), and
 `thin_ice resume` without a run directory first is one line (2); `thin_ice parameters` prints a
-scenario's resolved parameters as a scenario file that loads back to the same text (0), and a bad
+scenario's resolved parameters as a scenario file that loads back to the same text, E_v by its rule or as stated (0), and a bad
 argument or value is one line (2).
 
     test_command_line.py THIN_ICE   (THIN_ICE: the thin_ice program)
@@ -70,8 +70,9 @@ def main():
     quick = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "config", "scenarios", "quick.yaml")
     printed = call([thin_ice, "parameters", "--scenario", quick, "--set", "sheet.seed=3"])
     lines = printed.stdout.splitlines()
-    if printed.returncode != 0 or "  vertical_modulus: 1276000" not in lines or "  seed: 3" not in lines or \
-            "  thickness: 0.051" not in lines:
+    if printed.returncode != 0 or "  vertical_modulus_floating_plate_multiple: 4" not in lines or \
+            "  seed: 3" not in lines or "  thickness: 0.051" not in lines or \
+            not any(line.startswith("  vertical_modulus: 12749") for line in lines):
         failures.append(f"thin_ice parameters quick.yaml: exit status {printed.returncode}, stdout {printed.stdout[:300]!r}")
     else:
         with tempfile.TemporaryDirectory() as tmp:
@@ -82,10 +83,10 @@ def main():
             if again.returncode != 0 or again.stdout.splitlines()[1:] != lines[1:]:
                 failures.append(f"the printed parameters loaded again: exit status {again.returncode}, "
                                 f"{again.stdout[:200]!r}, differs: {again.stdout.splitlines()[1:] != lines[1:]}")
-    ruled = call([thin_ice, "parameters", "--scenario", quick, "--set", "ice.vertical_modulus_floating_plate_multiple=4"])
-    if ruled.returncode != 0 or "  vertical_modulus_floating_plate_multiple: 4" not in ruled.stdout.splitlines() or \
-            "  vertical_modulus: 1276000" in ruled.stdout.splitlines():
-        failures.append(f"thin_ice parameters with the rule of E_v: exit status {ruled.returncode}, {ruled.stdout[:300]!r}")
+    stated = call([thin_ice, "parameters", "--scenario", quick, "--set", "ice.vertical_modulus=1.276e6"])
+    if stated.returncode != 0 or "  vertical_modulus: 1276000" not in stated.stdout.splitlines() or \
+            "vertical_modulus_floating_plate_multiple" in stated.stdout:
+        failures.append(f"thin_ice parameters with E_v stated: exit status {stated.returncode}, {stated.stdout[:300]!r}")
     expect(["parameters", "--scenario", quick, "--set", "ice.thickness=-1"], 2, lambda out: out == "",
            lambda err: len(err.splitlines()) == 1 and "ice.thickness" in err, "a value out of range")
     expect(["parameters", "--scenario", quick, "--until-time", "1"], 2, lambda out: out == "",

@@ -157,6 +157,11 @@ Field ruledNumber(double IceParams::*member, double IceParams::*factor, const ch
 }
 Field ruleFactor(double IceParams::*factor, const char* key, Range range, const char* value_key) {
   Field f = number(&Params::ice, factor, key, range);
+  f.set = [=](Params& p, const YAML::Node& n) {
+    const double v = viaYaml<double>(n);
+    if (std::isnan(v)) throw BadValue(describe(n));  // NaN would read as "no rule", not as a bad value
+    p.ice.*factor = v;
+  };
   f.show = [=](const Params& p) { return std::isnan(p.ice.*factor) ? std::string() : showValue(p.ice.*factor); };
   f.rule_factor = true;
   f.alternative = value_key;

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <fstream>
 #include <limits>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 
@@ -88,13 +89,30 @@ Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, s
   if (parameters_recorded) *parameters_recorded = recorded.IsMap();
   if (recorded.IsMap()) {
     std::vector<std::string> kept;
-    std::string differences;
+    std::string differences, unknown;
+    std::set<std::string> given_now;
     for (const ParameterValue& now : scenarioParameters(scenario.params)) {
+      given_now.insert(now.key);
       const YAML::Node run_value = recorded[now.key];
       if (!run_value.IsDefined() || !run_value.IsScalar() || run_value.Scalar() == now.value) continue;
       differences += (differences.empty() ? "" : ", ") + now.key + " " + now.value + " (the run's: " +
                      run_value.Scalar() + ")";
       kept.push_back(now.key + "=" + run_value.Scalar());
+    }
+    // What the run gave and the file now does not: a rule it used (E_v by its factor, where the file
+    // now states a value), after the values in the format's order, so that the rule holds again.
+    for (const auto& item : recorded) {
+      const std::string key = item.first.as<std::string>();
+      if (given_now.count(key) || !item.second.IsScalar()) continue;
+      const std::string set = key + "=" + item.second.Scalar();
+      try {
+        overrideKey(set, file);
+      } catch (const ScenarioError&) {
+        unknown += (unknown.empty() ? "" : " ") + key;
+        continue;
+      }
+      differences += (differences.empty() ? "" : ", ") + key + " not given (the run's: " + item.second.Scalar() + ")";
+      kept.push_back(set);
     }
     if (!differences.empty()) {
       if (accept_changed_file) {
@@ -114,6 +132,10 @@ Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, s
     if (!unrecorded.empty()) {
       warning += std::string(warning.empty() ? "" : "; ") + "the run recorded no value of " + unrecorded +
                  ": the file's taken";
+    }
+    if (!unknown.empty()) {
+      warning += std::string(warning.empty() ? "" : "; ") + "the run recorded " + unknown +
+                 ", which the scenario format no longer has: left out";
     }
     return scenario;
   }
