@@ -318,7 +318,7 @@ def rtf_section(run, lines):
 
 
 def pile_section(run, lines):
-    """The grown M-2 pile (bench/states/m2-pile: 6000 cells, about 17000 contacts) stepped from its
+    """The grown M-2 pile (bench/states/m2-pile: 6000 cells, 4362 pairs of touching slabs) stepped from its
     saved state on one and two threads: where a validation run spends its time."""
     rows = []
     for threads in (1, 2):
