@@ -20,61 +20,15 @@
 #include "thin_ice_sim/model.hpp"
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/simulation.hpp"
+#include "scenario_file_test.hpp"
 
 namespace thin_ice {
 namespace {
 
-namespace fs = std::filesystem;
-
-const std::string kSourceDir = THIN_ICE_SOURCE_DIR;
-const std::string kScenarioDir = kSourceDir + "/config/scenarios/";
+using namespace scenario_test;
 
 // Relative tolerance on numbers read from YAML text (they parse to the nearest double).
 constexpr double kTolRead = 1e-12;
-
-std::string readText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::runtime_error("cannot read " + path);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
-std::vector<std::string> splitLines(const std::string& text) {
-  std::vector<std::string> lines;
-  std::istringstream in(text);
-  for (std::string line; std::getline(in, line);) lines.push_back(line);
-  return lines;
-}
-
-/// `yaml` with the line of `section.key` replaced by `new_line` ("" removes it). The key's line
-/// is the first "  key:" after the line "section:" and before the next section.
-std::string withLine(const std::string& yaml, const std::string& section, const std::string& key,
-                     const std::string& new_line) {
-  std::vector<std::string> lines = splitLines(yaml);
-  bool in_section = false;
-  for (size_t i = 0; i < lines.size(); ++i) {
-    const std::string& line = lines[i];
-    if (!line.empty() && line[0] != ' ' && line[0] != '#') in_section = line == section + ":";
-    if (in_section && line.rfind("  " + key + ":", 0) == 0) {
-      if (new_line.empty()) {
-        lines.erase(lines.begin() + static_cast<long>(i));
-      } else {
-        lines[i] = new_line;
-      }
-      std::string out;
-      for (const std::string& l : lines) out += l + "\n";
-      return out;
-    }
-  }
-  throw std::logic_error("test setup: no " + section + "." + key + " in the YAML text");
-}
-
-/// `yaml` with `section.key` set to `value` (its comment dropped).
-std::string withValue(const std::string& yaml, const std::string& section, const std::string& key,
-                      const std::string& value) {
-  return withLine(yaml, section, key, "  " + key + ": " + value);
-}
 
 /// Reference 64-bit FNV-1a, as documented in scenario.cpp.
 std::string fnv1a(const std::string& bytes) {
@@ -91,56 +45,6 @@ std::string fnv1a(const std::string& bytes) {
 void expectNear(double expected, double actual, const char* what) {
   EXPECT_NEAR(actual, expected, kTolRead * std::abs(expected)) << what;
 }
-
-/// Each test gets its own directory for the YAML files it writes.
-class ScenarioFileTest : public ::testing::Test {
- protected:
-  void SetUp() override {
-    dir_ = fs::path(::testing::TempDir()) /
-           ("thin_ice_scenario_" +
-            std::string(::testing::UnitTest::GetInstance()->current_test_info()->name()));
-    fs::remove_all(dir_);
-    fs::create_directories(dir_);
-    quick_ = readText(kScenarioDir + "quick.yaml");
-  }
-  void TearDown() override {
-    std::error_code ignored;
-    fs::remove_all(dir_, ignored);
-  }
-
-  std::string write(const std::string& name, const std::string& text) const {
-    const std::string path = (dir_ / name).string();
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-  }
-
-  /// The message of the ScenarioError that loading `path` throws ("" and a failure when none).
-  static std::string errorOf(const std::string& path,
-                             const std::vector<std::string>& overrides = {}) {
-    try {
-      loadScenario(path, overrides);
-    } catch (const ScenarioError& e) {
-      return e.what();
-    }
-    ADD_FAILURE() << "no ScenarioError for " << path;
-    return "";
-  }
-
-  /// Writes `text` as `name`, loads it, and checks the one-line message mentions every part.
-  void expectError(const std::string& name, const std::string& text,
-                   std::initializer_list<std::string> parts,
-                   const std::vector<std::string>& overrides = {}) const {
-    const std::string message = errorOf(write(name, text), overrides);
-    EXPECT_EQ(message.find('\n'), std::string::npos) << message;
-    EXPECT_NE(message.find(name), std::string::npos) << "file name missing: " << message;
-    for (const std::string& part : parts) {
-      EXPECT_NE(message.find(part), std::string::npos) << "'" << part << "' missing: " << message;
-    }
-  }
-
-  fs::path dir_;
-  std::string quick_;
-};
 
 // ----- Shipped scenarios ----------------------------------------------------------------------
 
@@ -602,112 +506,6 @@ TEST_F(ScenarioFileTest, ABaseThatIsMissingCyclesOrIsNotATextIsRefused) {
 TEST_F(ScenarioFileTest, RequiredKeysMissingFromTheWholeChainAreNamed) {
   write("partial.yaml", "ice:\n  thickness: 0.05\n");
   expectError("on_partial.yaml", "base: partial.yaml\n", {"missing required key ice.density"});
-}
-
-// ----- Rules for derived values, and the whole parameter set --------------------------------
-
-TEST_F(ScenarioFileTest, EvAndKAreWorkedOutByTheirRulesFromTheSeriesIce) {
-  // W-3 (h = 0.052 m, E = 103 MPa, sigma_f = 42 kPa, sigma_comp = 54 kPa; nu = 0.3, rho_w = 1000
-  // kg/m^3, g = 9.81 m/s^2). The floating plate: D = E h^3 / (12 (1 - nu^2)) = 1326.2476 N m,
-  // l^2 = sqrt(D / (rho_w g)) = 0.367687 m^2; E_v = 4 x 2 (1 + nu) rho_w g l^2 / h = 721401.11 Pa.
-  // k = 0.5 x 42 / 54 = 0.388889.
-  const std::string path = kScenarioDir + "W-3.yaml";
-  const Params p = loadScenario(path, {"ice.vertical_modulus_floating_plate_multiple=4",
-                                       "ice.compression_coupling_strength_fraction=0.5"}).params;
-  EXPECT_NEAR(p.ice.vertical_modulus, 721401.11, 0.01);
-  EXPECT_NEAR(p.ice.compression_coupling, 0.388889, 1e-6);
-  // The rule follows its inputs: E four times stiffer gives l^2 twice, so E_v twice.
-  const Params stiffer = loadScenario(path, {"ice.youngs_modulus=412e6", "ice.vertical_modulus_floating_plate_multiple=4"}).params;
-  EXPECT_NEAR(stiffer.ice.vertical_modulus, 2.0 * 721401.11, 0.02);
-}
-
-TEST_F(ScenarioFileTest, WhicheverOfAValueAndItsRuleComesLastHolds) {
-  // quick.yaml gives E_v by its rule (M-2's ice: 1.27491e6 Pa, where a value of 1.276e6, the rule
-  // rounded, stood before). Then a value given by --set: the value (a sensitivity run at a stated E_v).
-  const std::string ruled = write("ruled.yaml", quick_);
-  const double rule_value = loadScenario(ruled).params.ice.vertical_modulus;
-  EXPECT_NEAR(rule_value, 1.274907e6, 1.0);
-  EXPECT_EQ(loadScenario(ruled, {"ice.vertical_modulus=103e6"}).params.ice.vertical_modulus, 103e6);
-  // A file's value, then a rule given by --set: the rule.
-  const std::string stated = write("stated.yaml", withLine(quick_, "ice", "vertical_modulus_floating_plate_multiple",
-                                                           "  vertical_modulus: 1.276e6"));
-  EXPECT_EQ(loadScenario(stated).params.ice.vertical_modulus, 1.276e6);
-  EXPECT_EQ(loadScenario(stated, {"ice.vertical_modulus_floating_plate_multiple=4"}).params.ice.vertical_modulus,
-            rule_value);
-  // In a chain: the base's rule, the series' value; and the base alone, its rule (k = 1 x 108/130).
-  write("rule_base.yaml", withLine(quick_, "ice", "compression_coupling_strength_fraction",
-                                   "  compression_coupling_strength_fraction: 1"));
-  const Params chained = loadScenario(write("on_rule.yaml", "base: rule_base.yaml\nice:\n  compression_coupling: 0.2\n")).params;
-  EXPECT_EQ(chained.ice.compression_coupling, 0.2);
-  EXPECT_NEAR(loadScenario((dir_ / "rule_base.yaml").string()).params.ice.compression_coupling,
-              108.0 / 130.0, 1e-12);
-}
-
-TEST_F(ScenarioFileTest, AValueGivenNeitherWayOrABadRuleIsRefusedByItsOwnKey) {
-  expectError("neither.yaml", withLine(quick_, "ice", "vertical_modulus_floating_plate_multiple", ""),
-              {"missing required key ice.vertical_modulus", "or ice.vertical_modulus_floating_plate_multiple"});
-  expectError("zero-rule.yaml", quick_, {"ice.vertical_modulus_floating_plate_multiple", "0"},
-              {"ice.vertical_modulus_floating_plate_multiple=0"});
-  // NaN would read as "no rule": refused as a bad value.
-  expectError("nan-rule.yaml", quick_, {"ice.compression_coupling_strength_fraction", "expected a number"},
-              {"ice.compression_coupling_strength_fraction=.nan"});
-  // A bad input of the rule is blamed on that input, not on the E_v it would give.
-  const std::string message = errorOf(write("bad-input.yaml", quick_), {"ice.poisson_ratio=0.7"});
-  EXPECT_NE(message.find("ice.poisson_ratio"), std::string::npos) << message;
-  EXPECT_EQ(message.find("ice.vertical_modulus"), std::string::npos) << message;
-}
-
-TEST(ScenarioParameters, TheWholeSetGivenAsOverridesGivesTheSameParametersBitForBit) {
-  // What a run records (summary.json "parameters") must give back its parameters exactly, whatever
-  // the file says: every shipped scenario, and one with both rules in use.
-  std::vector<std::pair<std::string, std::vector<std::string>>> cases;
-  for (const auto& entry : fs::directory_iterator(kScenarioDir)) {
-    if (entry.path().extension() == ".yaml") cases.push_back({entry.path().string(), {}});
-  }
-  cases.push_back({kScenarioDir + "W-3.yaml",
-                   {"ice.vertical_modulus_floating_plate_multiple=4", "ice.compression_coupling_strength_fraction=0.5",
-                    "ice.poisson_ratio=0.33", "sheet.seed=7"}});
-  ASSERT_GE(cases.size(), 9u);
-  for (const auto& [path, overrides] : cases) {
-    const Params original = loadScenario(path, overrides).params;
-    const std::vector<ParameterValue> recorded = scenarioParameters(original);
-    std::vector<std::string> as_overrides;
-    for (const ParameterValue& v : recorded) as_overrides.push_back(v.key + "=" + v.value);
-    // Onto a different scenario's file: nothing of it may survive.
-    const Params again = loadScenario(kScenarioDir + "S-2.yaml", as_overrides).params;
-    const std::vector<ParameterValue> given_back = scenarioParameters(again);
-    ASSERT_EQ(given_back.size(), recorded.size()) << path;
-    for (size_t k = 0; k < recorded.size(); ++k) {
-      EXPECT_EQ(given_back[k].key, recorded[k].key) << path;
-      EXPECT_EQ(given_back[k].value, recorded[k].value) << path << " " << recorded[k].key;
-    }
-    EXPECT_EQ(again.ice.vertical_modulus, original.ice.vertical_modulus) << path;
-    EXPECT_EQ(again.ice.compression_coupling, original.ice.compression_coupling) << path;
-    EXPECT_EQ(again.ice.thickness, original.ice.thickness) << path;
-    EXPECT_EQ(again.water.gravity, original.water.gravity) << path;
-    EXPECT_EQ(again.sheet.seed, original.sheet.seed) << path;
-  }
-}
-
-TEST(ScenarioParameters, EveryKeyOfTheFormatIsListedOnceAndAnUnusedRuleNotAtAll) {
-  // E_v stated as a value (its rule unused), k by its rule.
-  const Params p = loadScenario(kScenarioDir + "quick.yaml", {"ice.vertical_modulus=1.276e6"}).params;
-  std::set<std::string> keys;
-  for (const ParameterValue& v : scenarioParameters(p)) {
-    EXPECT_TRUE(keys.insert(v.key).second) << v.key << " twice";
-    EXPECT_FALSE(v.value.empty()) << v.key;
-  }
-  EXPECT_EQ(keys.count("ice.vertical_modulus"), 1u);
-  EXPECT_EQ(keys.count("ice.vertical_modulus_floating_plate_multiple"), 0u);
-  EXPECT_EQ(keys.count("ice.compression_coupling"), 1u);
-  EXPECT_EQ(keys.count("ice.compression_coupling_strength_fraction"), 1u);
-  EXPECT_EQ(keys.count("sheet.layout"), 1u);
-  EXPECT_EQ(keys.count("bottom.enabled"), 1u);
-  EXPECT_EQ(keys.count("numerics.threads"), 1u);
-  // The shortest text that reads back: 0.052, not 0.051999999999999998.
-  for (const ParameterValue& v : scenarioParameters(loadScenario(kScenarioDir + "W-3.yaml").params)) {
-    if (v.key == "ice.thickness") EXPECT_EQ(v.value, "0.052");
-  }
 }
 
 }  // namespace
