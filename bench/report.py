@@ -66,8 +66,8 @@ def cpu_section(run, out, lines):
               "M-2 ice (h = 0.051 m, E = 328 MPa), 0.2 m cells, dt = 4e-6 s; a 2:1 sheet of about the given",
               "number of cells, kept away from the structure. \"broken field\": every bond marked broken before",
               "the first step, so that the pieces, still touching edge to edge, are held together by DEM contacts",
-              "only (until 2026-12-07 the bonds broke in the first step under strengths of 1 Pa, which pushed the",
-              "pieces apart: those figures are not comparable with these). Memory: growth of the",
+              "only (earlier versions of this table set strengths of 1 Pa instead, so the bonds broke in the first step and",
+              "pushed the pieces apart: those figures are not comparable with these). Memory: growth of the",
               "process's peak resident set per cell (sheet generation included: an upper bound); on the GPU, the",
               "device memory held after the steps (cudaMemGetInfo), not the peak of a rebuild's temporaries.", ""]
     header = list(rows[0].keys())

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """The project's corpus of bad input for `thin_ice run` (and `thin_ice resume`): the classes an
-outside tester tried (2026-12-04), written as cases generated from config/scenarios/quick.yaml and a
+outside tester tried, written as cases generated from config/scenarios/quick.yaml and a
 list by hand.
 Each case asserts exit status 2, one error line (starting "thin_ice run:", followed at most by
 the usage text) that names the key, file or argument at fault, and that nothing was written: the

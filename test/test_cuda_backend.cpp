@@ -33,7 +33,7 @@ const std::string kQuick = std::string(THIN_ICE_SOURCE_DIR) + "/config/scenarios
 /// forward so that the front row's deepest corner lies kFaceDepth past the inclined face. The
 /// first version moved the sheet by a fixed 0.12 m: about 5 cm into the face, where K_struct =
 /// 1.7e11 Pa gives the front cells meganewtons and the CPU reference itself blew up at its first
-/// step (seen on an H200, 2026-12-04; CI never ran it, the whole test skipped without a GPU).
+/// step (seen on an H200 in issue #32's first GPU session; CI never ran it, the whole test skipped without a GPU).
 constexpr double kFaceDepth = 2e-4;  // [m] horizontal reach past the face: ~1e3 N on a front cell
 
 Model stripModelOf(const std::vector<std::string>& more_overrides) {

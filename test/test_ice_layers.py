@@ -32,7 +32,7 @@ CELLS = [(5.0, -0.04, True, 3),    # the sheet at rest: neither
          (8.0, -0.095, True, 3)]   # the sheet, pressed down for h = 0.1 only, 2.0 m from the toe
 # h = 0.1: below 1, 2, 6 (one the sheet's); above 3, 4; free 1, 3; sheet 3 cells; farthest broken
 # below 2.5 m (cell 6 at 2.0 m is the sheet's); the sheet's cell nearest the toe is cell 6, 2.0 m in
-# front of it. The "thick" run's snapshot is written without piece_cells, as before 2026-12-02:
+# front of it. The "thick" run's snapshot is written without piece_cells, as older snapshots were:
 # below 2 only, above 4 only, the sheet unknown, farthest 2.5 m.
 EXPECTED_ROW = "| 0.500 | 3 | 1 | 2 | 0 | 2 | 3 | 2.50 | 2.00 |"
 EXPECTED_ROW_THICK = "| 0.500 | 1 | - | 1 | - | 2 | - | 2.50 | - |"

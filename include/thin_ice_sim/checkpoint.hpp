@@ -14,7 +14,7 @@ struct Checkpoint {
   std::string scenario_hash;     ///< Scenario::hash of the run's scenario (file text + overrides)
   double pusher_velocity = 0.0;  ///< [m/s] commanded at the time of the checkpoint
   BackendState state;
-  /// Read from a file that carries a checksum (format 2); false for format 1 (before 2026-12-04),
+  /// Read from a file that carries a checksum (format 2); false for format 1 ("TICKPT01", no checksum),
   /// which still resumes, with a warning that damage to it cannot be told.
   bool checksummed = true;
 };

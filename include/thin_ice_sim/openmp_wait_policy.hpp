@@ -4,7 +4,7 @@
 // Why: libgomp's default lets a thread that waits at the end of a parallel loop spin for a while
 // before it sleeps. On a machine whose cores are busy with other work (two runs on two cores, a
 // strip matrix, CI), the spinning threads take the cores from the thread the loop waits for, and
-// every step pays for it. Measured on 2026-12-04 on the 2-core build machine with two other runs
+// every step pays for it. Measured on the 2-core build machine with two other runs
 // going (thin_ice_bench --state bench/states/m2-pile, 200 steps): one thread 10.2 ms a step, two
 // threads 13.1-13.6 ms with the default, 6.5-6.7 ms passive (GOMP_SPINCOUNT=10000: 10.6 ms).
 //

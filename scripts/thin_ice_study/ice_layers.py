@@ -3,7 +3,7 @@ pushed sheet apart from the broken ice: is the broken ice going under the sheet 
 and is the sheet pressed down? A cell counts as below (above) when its centroid is more than h/2
 below (above) the level at which a cell floats at rest, z_rest = h/2 - (rho_i / rho_w) h
 (Archimedes; the model's cells do not tilt). The sheet is the largest piece held together by
-intact bonds (snapshot column piece_cells, written since 2026-12-02); every other cell is broken
+intact bonds (snapshot column piece_cells; older snapshots lack it); every other cell is broken
 ice. The side view (scripts/study plot_side_view) shows one snapshot; this gives the history as numbers.
 
 usage: scripts/study ice_layers RUN_DIR... [--earlier CSV] [--csv OUT] [--plot OUT_PNG]
@@ -40,7 +40,7 @@ SUMMARY = "per snapshot, the broken ice under and over the sheet's level and the
 
 COLUMNS = ["run", "pushed_length_m", "cells_below", "sheet_cells_below", "cells_above", "sheet_cells_above",
            "free_blocks", "sheet_cells", "farthest_broken_below_from_toe_m", "sheet_nearest_to_toe_m"]
-# Written before 2026-12-03, without the last column: still read by --earlier (it is left empty).
+# The table's first version, without the last column: still read by --earlier (it is left empty).
 EARLIER_COLUMNS = COLUMNS[:-1]
 
 
@@ -90,7 +90,7 @@ def run_table(run):
     if summary is None:
         fail(f"{run} is not a finished run with snapshots (no {run_record.SUMMARY_FILE})")
     if "structure" not in summary:
-        fail(f"{run}/summary.json has no structure geometry (written by `thin_ice run` since 2026-12-01)")
+        fail(f"{run}/summary.json has no structure geometry (older `thin_ice run` records lack it)")
     try:
         h, z_rest = floating_level(summary)
     except ValueError as e:

@@ -1,7 +1,7 @@
 """Draws a cell snapshot of a run near the structure, seen from the side (x, z) and from above
 (x, y): every cell's centroid, blue in the pushed sheet (the largest piece held together by intact
 bonds), green in a smaller bonded piece (a floe), red when it has no bond left (a free block).
-Snapshots written before 2026-12-02 have no piece sizes: there blue is any bonded cell, sheet or
+Older snapshots have no piece sizes (no piece_cells column): there blue is any bonded cell, sheet or
 floe. The side view shows what the rubble profiles (above the water only) do not: ice under the
 waterline and under the incoming sheet.
 
@@ -72,7 +72,7 @@ def main(argv):
         fail(f"{summary_path} is not JSON ({e})")
     if "structure" not in summary or "false_bottom" not in summary:
         sys.exit(f"{PROG}: {a.run}/summary.json has no structure or false_bottom geometry "
-                 "(written by `thin_ice run` since 2026-12-01); run the scenario again")
+                 "(older `thin_ice run` records lack it); run the scenario again")
     # A run without the false bottom has "false_bottom": null: the side view then draws none.
     structure, bottom = summary["structure"], summary["false_bottom"]
     toe, angle = structure["toe_x_m"], math.radians(structure["angle_deg"])

@@ -82,7 +82,7 @@ def floating_level(summary):
 
 def sheet_size(cells):
     """Cells in the pushed sheet, the largest piece held together by intact bonds, from a snapshot's
-    rows (column piece_cells, written since 2026-12-02); None for a snapshot without that column."""
+    rows (column piece_cells, which older snapshots lack); None for a snapshot without that column."""
     if not cells or "piece_cells" not in cells[0]:
         return None
     return max(int(c["piece_cells"]) for c in cells)

@@ -5,7 +5,7 @@
 //   u64 cells,  CellMotion x cells (8 f64 each) | u64 bonds, u8 x bonds |
 //   u64 pairs,  i32 i x pairs, i32 j x pairs, f64 S_ref x pairs |
 //   u64 checksum: FNV-1a 64 of every byte before it | "TICKEND\0"
-// Format 1 ("TICKPT01", until 2026-12-04) is the same without the checksum; it is still read.
+// Format 1 ("TICKPT01", the first) is the same without the checksum; it is still read.
 #include "thin_ice_sim/checkpoint.hpp"
 
 #include <cmath>

@@ -326,7 +326,7 @@ std::vector<CellSnapshot> readCellSnapshot(const std::string& path) {
     c.z = csvNumber(row, column::kZ, path);
     c.yaw = csvNumber(row, column::kYaw, path);
     c.in_intact_sheet = csvNumber(row, column::kInIntactSheet, path) != 0.0;
-    // Snapshots written before 2026-12-02 have no piece_cells: 0 there means "not recorded".
+    // Older snapshots have no piece_cells column: 0 there means "not recorded".
     c.piece_cells = row.count(column::kPieceCells) ? static_cast<int>(csvNumber(row, column::kPieceCells, path)) : 0;
     cells.push_back(c);
   }

@@ -395,8 +395,8 @@ std::unique_ptr<Simulation> prepareResume(Options& o, Continuation& cont) {
     }
     const std::string checkpoint_path = dir + "/" + thin_ice::run_record::kCheckpointFile;
     if (!std::filesystem::exists(checkpoint_path)) {
-      throw ResumeError(dir + " has no checkpoint.bin (`thin_ice run` writes one at the end of every healthy run "
-                        "since 2026-12-01)");
+      throw ResumeError(dir + " has no checkpoint.bin (`thin_ice run` writes one at the end of every healthy run; "
+                        "a run that failed, or one recorded before checkpoints existed, has none)");
     }
     checkpoint = thin_ice::readCheckpoint(checkpoint_path);
     if (!checkpoint.checksummed) {

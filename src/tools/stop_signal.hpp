@@ -24,7 +24,7 @@ static_assert(std::atomic<long long>::is_always_lock_free, "the signal handler n
 
 /// A repeat within this time [ns] of the first signal is the same request delivered twice: GNU
 /// timeout (a wall budget) sends its signal to the command and then to its own process group, which
-/// holds the command too. Seen on 2026-12-04: 6 of 14 strip runs under `timeout -s TERM` died at
+/// holds the command too. Seen on a GPU machine: 6 of 14 strip runs under `timeout -s TERM` died at
 /// the second delivery and left only loads.csv.partial.
 constexpr long long kRepeatedDeliveryNs = 1000000000LL;
 

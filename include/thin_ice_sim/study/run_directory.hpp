@@ -25,7 +25,7 @@ double csvNumber(const CsvRow& row, const std::string& column, const std::string
 /// The scenario (file and overrides) named by RUN/summary.json, loaded anew, with the run's own
 /// parameters. Relative scenario paths are taken from the current directory, as `thin_ice run` was
 /// given them. Throws std::runtime_error when RUN is not a run directory.
-/// - A run that recorded its parameters (summary.json "parameters", written since 2026-12-07)
+/// - A run that recorded its parameters (summary.json "parameters"; older records have none)
 ///   keeps them: where the file now gives other values, they are added to the overrides, so that
 ///   the sheet, the bonds and the laws stay the run's whatever became of the file (derived
 ///   values turned into rules, a base file retouched), and `warning` names each key, the file's
