@@ -35,6 +35,79 @@ YAML::Node loadSummary(const std::string& run_dir) {
   }
 }
 
+/// Appends `item` to `list`, after `separator` when the list is not empty.
+void appendItem(std::string& list, const char* separator, const std::string& item) {
+  list += (list.empty() ? "" : separator) + item;
+}
+
+/// The scenario of a run that recorded its parameters (summary.json "parameters", `recorded`): the
+/// file with the run's overrides, and where the file now gives other values, the run's values
+/// added to the overrides (unless accept_changed_file), each named in `warning` with both values.
+Scenario keepRecordedParameters(const std::string& file, std::vector<std::string> overrides,
+                                const YAML::Node& recorded, bool accept_changed_file, std::string& warning) {
+  Scenario scenario = loadScenario(file, overrides);
+  std::vector<std::string> kept;
+  std::string differences, unknown;
+  std::set<std::string> given_now;
+  for (const ParameterValue& now : scenarioParameters(scenario.params)) {
+    given_now.insert(now.key);
+    const YAML::Node run_value = recorded[now.key];
+    if (!run_value.IsDefined() || !run_value.IsScalar() || run_value.Scalar() == now.value) continue;
+    appendItem(differences, ", ", now.key + " " + now.value + " (the run's: " + run_value.Scalar() + ")");
+    kept.push_back(now.key + "=" + run_value.Scalar());
+  }
+  // What the run gave and the file now does not: a rule it used (E_v by its factor, where the file
+  // now states a value), after the values in the format's order, so that the rule holds again.
+  for (const auto& item : recorded) {
+    const std::string key = item.first.as<std::string>();
+    if (given_now.count(key) || !item.second.IsScalar()) continue;
+    const std::string set = key + "=" + item.second.Scalar();
+    try {
+      overrideKey(set, file);
+    } catch (const ScenarioError&) {
+      appendItem(unknown, " ", key);
+      continue;
+    }
+    appendItem(differences, ", ", key + " not given (the run's: " + item.second.Scalar() + ")");
+    kept.push_back(set);
+  }
+  if (!differences.empty()) {
+    if (accept_changed_file) {
+      warning = "scenario " + file + " now gives " + differences + "; the file's values taken, as asked";
+    } else {
+      overrides.insert(overrides.end(), kept.begin(), kept.end());
+      scenario = loadScenario(file, overrides);
+      warning = "scenario " + file + " now gives " + differences + "; the run keeps its own (added to its "
+                "overrides; --accept-changed-scenario takes the file's)";
+    }
+  }
+  // Keys the run has no value of: added to the format after it (or a rule the file now uses).
+  std::string unrecorded;
+  for (const ParameterValue& now : scenarioParameters(scenario.params)) {
+    if (!recorded[now.key].IsDefined()) appendItem(unrecorded, " ", now.key);
+  }
+  if (!unrecorded.empty()) appendItem(warning, "; ", "the run recorded no value of " + unrecorded + ": the file's taken");
+  if (!unknown.empty()) {
+    appendItem(warning, "; ", "the run recorded " + unknown + ", which the scenario format no longer has: left out");
+  }
+  return scenario;
+}
+
+/// A run recorded before its parameters were: held to the hash of its scenario (file text and
+/// overrides). A changed file is refused unless accept_changed_file, which takes it with a warning.
+void holdToRunHash(const Scenario& scenario, const std::string& file, const std::string& run_hash,
+                   bool accept_changed_file, std::string& warning) {
+  if (scenario.hash == run_hash) return;
+  const std::string what = "scenario " + file + " has changed since the run (hash " + scenario.hash +
+                           ", the run's " + run_hash + ")";
+  if (!accept_changed_file) {
+    throw std::runtime_error(what + ": its sheet and bonds may not be the run's (--accept-changed-scenario if the "
+                             "run's parameters did not change: only comments, or one of its --set values written "
+                             "into the file)");
+  }
+  warning = what + "; taken as the run's, as asked";
+}
+
 }  // namespace
 
 std::vector<CsvRow> readCsv(const std::string& path) {
@@ -83,73 +156,12 @@ Scenario loadRunScenario(const std::string& run_dir, bool accept_changed_file, s
                              "working directory " + std::filesystem::current_path().string() +
                              ": resume from that directory (the repository root for the shipped runs)");
   }
-  Scenario scenario = loadScenario(file, overrides);
   warning.clear();
   const YAML::Node recorded = summary["parameters"];
   if (parameters_recorded) *parameters_recorded = recorded.IsMap();
-  if (recorded.IsMap()) {
-    std::vector<std::string> kept;
-    std::string differences, unknown;
-    std::set<std::string> given_now;
-    for (const ParameterValue& now : scenarioParameters(scenario.params)) {
-      given_now.insert(now.key);
-      const YAML::Node run_value = recorded[now.key];
-      if (!run_value.IsDefined() || !run_value.IsScalar() || run_value.Scalar() == now.value) continue;
-      differences += (differences.empty() ? "" : ", ") + now.key + " " + now.value + " (the run's: " +
-                     run_value.Scalar() + ")";
-      kept.push_back(now.key + "=" + run_value.Scalar());
-    }
-    // What the run gave and the file now does not: a rule it used (E_v by its factor, where the file
-    // now states a value), after the values in the format's order, so that the rule holds again.
-    for (const auto& item : recorded) {
-      const std::string key = item.first.as<std::string>();
-      if (given_now.count(key) || !item.second.IsScalar()) continue;
-      const std::string set = key + "=" + item.second.Scalar();
-      try {
-        overrideKey(set, file);
-      } catch (const ScenarioError&) {
-        unknown += (unknown.empty() ? "" : " ") + key;
-        continue;
-      }
-      differences += (differences.empty() ? "" : ", ") + key + " not given (the run's: " + item.second.Scalar() + ")";
-      kept.push_back(set);
-    }
-    if (!differences.empty()) {
-      if (accept_changed_file) {
-        warning = "scenario " + file + " now gives " + differences + "; the file's values taken, as asked";
-      } else {
-        overrides.insert(overrides.end(), kept.begin(), kept.end());
-        scenario = loadScenario(file, overrides);
-        warning = "scenario " + file + " now gives " + differences + "; the run keeps its own (added to its "
-                  "overrides; --accept-changed-scenario takes the file's)";
-      }
-    }
-    // Keys the run has no value of: added to the format after it (or a rule the file now uses).
-    std::string unrecorded;
-    for (const ParameterValue& now : scenarioParameters(scenario.params)) {
-      if (!recorded[now.key].IsDefined()) unrecorded += (unrecorded.empty() ? "" : " ") + now.key;
-    }
-    if (!unrecorded.empty()) {
-      warning += std::string(warning.empty() ? "" : "; ") + "the run recorded no value of " + unrecorded +
-                 ": the file's taken";
-    }
-    if (!unknown.empty()) {
-      warning += std::string(warning.empty() ? "" : "; ") + "the run recorded " + unknown +
-                 ", which the scenario format no longer has: left out";
-    }
-    return scenario;
-  }
-  const std::string run_hash = summary["scenario"]["hash"].as<std::string>();
-  if (scenario.hash != run_hash) {
-    const std::string what = "scenario " + file + " has changed since the run (hash " + scenario.hash + ", the run's " +
-                             run_hash + ")";
-    if (!accept_changed_file) {
-      throw std::runtime_error(what + ": its sheet and bonds may not be the run's (--accept-changed-scenario if the "
-                               "run's parameters did not change: only comments, or one of its --set values written "
-                               "into the file)");
-    }
-    warning = what + "; taken as the run's, as asked";
-  }
+  if (recorded.IsMap()) return keepRecordedParameters(file, overrides, recorded, accept_changed_file, warning);
+  Scenario scenario = loadScenario(file, overrides);
+  holdToRunHash(scenario, file, summary["scenario"]["hash"].as<std::string>(), accept_changed_file, warning);
   return scenario;
 }
 
