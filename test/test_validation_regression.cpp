@@ -2,7 +2,9 @@
 // statistics must stay within stated tolerances of committed values (test/data/regression_M-2.yaml,
 // where the run, the tolerances and their measured basis are written down). A second case,
 // regression_M-2_singlerate.yaml, runs the same stretch with one rate at dt = 4e-6 s and keeps the
-// values measured before the structure contact was sub-stepped: the n = 1 path must not move.
+// values measured before the structure contact was sub-stepped: the n = 1 path must not move. A
+// third, regression_M-2_stated_inputs.yaml, gives E_v and k as M-2.yaml stated them before they
+// became rules and keeps the values measured then: the code from inputs to loads must not move.
 #include <gtest/gtest.h>
 #include <yaml-cpp/yaml.h>
 
@@ -24,10 +26,12 @@ const std::string kSource = THIN_ICE_SOURCE_DIR;
 class ValidationRegression : public ::testing::TestWithParam<std::string> {};
 
 INSTANTIATE_TEST_SUITE_P(Cases, ValidationRegression,
-                         ::testing::Values("regression_M-2.yaml", "regression_M-2_singlerate.yaml"),
+                         ::testing::Values("regression_M-2.yaml", "regression_M-2_singlerate.yaml",
+                                           "regression_M-2_stated_inputs.yaml"),
                          [](const ::testing::TestParamInfo<std::string>& info) {
-                           return info.param == "regression_M-2.yaml" ? std::string("scenario_as_shipped")
-                                                                      : std::string("single_rate");
+                           if (info.param == "regression_M-2.yaml") return std::string("scenario_as_shipped");
+                           if (info.param == "regression_M-2_singlerate.yaml") return std::string("single_rate");
+                           return std::string("inputs_as_stated_before_the_rules");
                          });
 
 TEST_P(ValidationRegression, ShortM2StretchKeepsItsLoadStatistics) {
