@@ -53,8 +53,8 @@ def main():
         os.makedirs(os.path.join(runs, "strips", "W-3-s1-old"))
         with open(os.path.join(runs, "phase2_why.md"), "w") as f:
             f.write("**Why the loads miss** the account\n")
-        with open(os.path.join(runs, "phase2.md"), "w") as f:
-            f.write("### Phase 2\n\nthe readings\n")
+        with open(os.path.join(runs, "bench.md"), "w") as f:
+            f.write("## How the runs are made\n\nthe bench\n")
         out = os.path.join(tmp, "validation.md")
         done = subprocess.run([sys.executable, script, "validation_report", "--runs", runs, "--out", out],
                               stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, timeout=120)
@@ -75,9 +75,9 @@ def main():
     ]
     missing = [line for line in expected if line not in text.splitlines()]
     order = [text.find(s) for s in ("| W-3 | strip, seed 1", "- A steady window", "**Why the loads miss**",
-                                    "### Phase 2", "## Records and history")]
+                                    "## How the runs are made", "## Records and history")]
     if -1 in order or order != sorted(order):
-        missing.append(f"the table, the targets, phase2_why.md, phase2.md and the records in that order ({order})")
+        missing.append(f"the table, the targets, phase2_why.md, bench.md and the records in that order ({order})")
     if "W-3-s1-old" in text:
         missing.append("W-3-s1-old is not a run and must be left out")
     if missing:

@@ -73,7 +73,7 @@ def strip_overrides(scenario, width, length):
         # Frictionless walls: a symmetry boundary, as the strip is a slice of a wider sheet. With
         # the scenario's wall friction (0.1) the pile of a 2 m M-2 strip held 11 % more load per
         # metre over 0-2 m than at full width; without it 7 %, about the full-width seed's own
-        # offset (docs/validation/phase2.md). A --set given to the strip still wins.
+        # offset (docs/journal/phase2-campaign.md). A --set given to the strip still wins.
         overrides.append("channel.width=%g" % width)
         overrides.append("channel.friction=0")
     return overrides

@@ -3,10 +3,10 @@ and docs/validation/full/, each run's summary.json and kept record load_bins.csv
 every series of Table 5 against Table 6 (phase2_table), the seed spread and the strip-against-
 full-width check, issue #31's targets judged over those runs, one figure of every run's load, and,
 taken in as they are, two hand-written files in the runs folder: phase2_why.md (why the loads
-miss, as far as the runs show it) under the table, and phase2.md (the strip bench and the paper's
-readings that chose the scenarios' reading) after the figure. Only what the runs measured is
-reported; a series without a run is listed as not run. The reading before phase 2 and its runs are
-history: docs/journal/validation-before-phase2.md.
+miss, as far as the runs show it) under the table, and bench.md (how the runs are made and how far
+a strip stands for the full width) after the figure. Only what the runs measured is reported; a
+series without a run is listed as not run. The runs' history is in docs/journal/:
+phase2-campaign.md (the readings and every run since) and validation-before-phase2.md.
 
   scripts/study validation_report --runs docs/validation --out docs/validation.md
 Exit status: 0 written; 2 bad input (the old report left as it was); 3 no run of Table 5's series
@@ -104,11 +104,11 @@ def main(argv):
                   f"![Every run at the scenarios' reading]({rel}/{FIGURE})", ""]
     else:
         lines += ["(No figure: matplotlib is missing.)", ""]
-    # Phase 2 (issue #31): the strip bench and the paper's readings that chose the reading above.
-    lines += hand_written(os.path.join(a.runs, "phase2.md"))
+    lines += hand_written(os.path.join(a.runs, "bench.md"))
     lines += ["## Records and history", "",
-              f"Which files of each run the repository keeps, and why: [records.md]({rel}/records.md). The",
-              "validation of the reading before phase 2, its tables and the dated calibration notes:",
+              f"Which files of each run the repository keeps, and why: [records.md]({rel}/records.md). How",
+              "the reading was chosen and every run since, as written run by run: docs/journal/phase2-campaign.md.",
+              "The validation of the reading before phase 2, its tables and the dated calibration notes:",
               "docs/journal/validation-before-phase2.md and docs/journal/calibration.md.", ""]
     path = a.out
     with open(path + ".partial", "w") as f:
