@@ -1,10 +1,12 @@
 """The experiments the simulator is validated against, read from config/experiments.yaml (the one
-place their figures are written; the C++ tools embed the same file when they are built)."""
+place their figures are written; the C++ tools embed the same file when they are built), and the
+paper's calibration factor alpha of Eq. (18) with which Table 6 compares with them, read from the
+scenarios' base file (the one place it is written; every shipped scenario inherits it)."""
 import os
 
 import yaml
 
-from . import ROOT
+from . import ROOT, scenario_file
 
 _PATH = os.path.join(ROOT, "config", "experiments.yaml")
 
@@ -20,6 +22,10 @@ ICE_TYPE = {k: v["name"] for k, v in _DATA["ice_types"].items()}
 # The paper's own simulation (Table 6, TIM): (peak, steady mean) [N].
 PAPER_TIM = {k: (v["paper_tim"]["peak"], v["paper_tim"]["steady_mean"]) for k, v in _DATA["ice_types"].items()}
 PUSHED_LENGTH = {k: float(v) for k, v in _DATA["pushed_length"].items()}  # [m] per series (Table 5)
+# alpha [-] of Eq. (18), the paper's one factor (Section 5.1.1): structure.calibration_factor of
+# config/scenarios/base/tank.yaml. Runs recorded with another alpha are rescaled to it in the reports.
+ALPHA = float(scenario_file.load(os.path.join(ROOT, "config", "scenarios", "base", "tank.yaml"))
+              ["structure"]["calibration_factor"])
 
 
 def per_metre(value):

@@ -6,7 +6,8 @@ per metre (Table 6)."""
 import os
 
 from . import run_record
-from .phase2_table import ALPHA, SERIES, runs_of
+from .experiments import ALPHA
+from .phase2_table import SERIES, runs_of
 from .png_output import save_png
 
 SMOOTHING = 0.5  # [m] of pushed ice each drawn point averages

@@ -14,7 +14,7 @@ import math
 import os
 import re
 
-from .experiments import PHASE1_SLOPE, PUSHED_LENGTH, per_metre
+from .experiments import ALPHA, PHASE1_SLOPE, PUSHED_LENGTH, per_metre
 from . import run_record
 from .strip_loads import within_seed_spread
 
@@ -22,7 +22,6 @@ SERIES = ["W-1", "W-2", "W-3", "M-1", "M-2", "S-1", "S-2"]
 EXPERIMENT_LENGTH = PUSHED_LENGTH  # [m] Table 5, per series (config/experiments.yaml)
 PHASE1_SLOPE_PER_METRE = per_metre(PHASE1_SLOPE)  # [N/m per m of pushed ice]: Table 6's slope per metre of width
 TARGETS = {"steady": 10.0, "peak": 25.0, "slope": 25.0}  # [%] issue #31's targets
-ALPHA = 0.63  # [-] Eq. (18), the paper's one factor; runs recorded with another alpha are rescaled
 # Runs at the scenarios' reading on a 14 m strip (config/strips/readings-14m.matrix: E_v set to the
 # value the scenario now holds), the longest of W-3 at this reading.
 SHORT_SHEET_STRIPS = {"W-3": [("strip 14 m, seed 1", "w3-ev4-14m"), ("strip 14 m, seed 2", "w3-ev4-s2-14m")]}

@@ -3,8 +3,8 @@ readings of the paper (issue #31).
 
 usage: scripts/study strip_table RUN_DIR... [--alpha A] [--window W] [--markdown]
   RUN_DIR     output folders of `thin_ice run` (loads.csv, summary.json, snapshots/)
-  --alpha     the structure's calibration factor of Eq. (18) applied to the raw load (default 0.63,
-              the paper's); the raw load is always shown beside it
+  --alpha     the structure's calibration factor of Eq. (18) applied to the raw load (default the
+              paper's, as the scenarios' base file gives it); the raw load is always shown beside it
   --window    the length of the windows of the means [m] (default 0.5)
   --upto      read each record only to this pushed length [m] (to compare runs over the same span,
               e.g. a strip against a full-width run over the first 2 m); also prints the mean over it
@@ -20,13 +20,13 @@ import math
 import os
 import sys
 
-from .experiments import PEAK, STEADY_MEAN, per_metre
+from .experiments import ALPHA, PEAK, STEADY_MEAN, per_metre
 from .strip_loads import read_run, window_means
 
 PROG = "scripts/study strip_table"
 SUMMARY = "tabulates strip runs per metre of width: window means, peak, steady verdict, the sheet's front"
 
-# Table 6 (alpha = 0.63 applied) per metre of the experiments' structure [N/m]: steady mean, peak.
+# Table 6 (the paper's alpha applied) per metre of the experiments' structure [N/m]: steady mean, peak.
 EXPERIMENT_PER_METRE = {k: (per_metre(STEADY_MEAN[k]), per_metre(PEAK[k])) for k in STEADY_MEAN}
 
 
@@ -50,7 +50,7 @@ def front_distances(path, toe_x):
 def main(argv):
     parser = argparse.ArgumentParser(prog=PROG, description=__doc__.split("\n")[0])
     parser.add_argument("runs", nargs="+")
-    parser.add_argument("--alpha", type=float, default=0.63)
+    parser.add_argument("--alpha", type=float, default=ALPHA)
     parser.add_argument("--window", type=float, default=0.5)
     parser.add_argument("--upto", type=float, default=None)
     parser.add_argument("--width", type=float, default=2.0,

@@ -12,6 +12,7 @@ import argparse
 import os
 import sys
 
+from .experiments import ALPHA
 from .strip_loads import read_run, window_means, within_seed_spread
 
 PROG = "scripts/study strip_vs_full"
@@ -38,7 +39,7 @@ def main(argv):
     p.add_argument("--span", type=float, required=True)
     p.add_argument("--full", nargs="+", required=True)
     p.add_argument("--strips", nargs="+", required=True)
-    p.add_argument("--alpha", type=float, default=0.63)
+    p.add_argument("--alpha", type=float, default=ALPHA)
     p.add_argument("--window", type=float, default=0.5)
     a = p.parse_args(argv)
     if not (a.span > 0 and a.window > 0 and a.alpha > 0):

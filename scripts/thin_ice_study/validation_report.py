@@ -18,9 +18,9 @@ import json
 import os
 import sys
 
-from .experiments import PEAK, STEADY_MEAN, STRUCTURE_WIDTH
+from .experiments import ALPHA, PEAK, STEADY_MEAN, STRUCTURE_WIDTH
 from .phase2_plot import SMOOTHING, draw
-from .phase2_table import ALPHA, SERIES, phase2_table, runs_of, targets
+from .phase2_table import SERIES, phase2_table, runs_of, targets
 from .run_record import LOAD_BIN_LENGTH
 from .refusal import refuse
 
