@@ -76,6 +76,33 @@ def main():
         if (got is None) != (wanted is None) or (wanted is not None and abs(got - wanted) > 1e-12):
             failures.append(f"mean_over({begin}, {end}): {got}, expected {wanted}")
 
+    # The readers on files written here: a partial loads.csv read up to its half-written last line,
+    # a header without a column asked for, and a run with no summary or no loads file.
+    with tempfile.TemporaryDirectory() as run:
+        with open(os.path.join(run, run_record.LOADS_FILE + ".partial"), "w") as f:
+            f.write("time_s,pushed_length_m,horizontal_calibrated_N\n0.01,0.002,5\n0.02,0.004,7\n0.03,0.0")
+        path, columns = run_record.read_load_columns(run, ("pushed_length_m", "horizontal_calibrated_N"))
+        expect("read_load_columns file", path, os.path.join(run, run_record.LOADS_FILE + ".partial"))
+        expect("read_load_columns rows", columns,
+               {"pushed_length_m": [0.002, 0.004], "horizontal_calibrated_N": [5.0, 7.0]})
+        try:
+            run_record.read_load_columns(run, ("pushed_length_m", "horizontal_raw_N", "contacts"))
+            failures.append("read_load_columns: a missing column was not refused")
+        except ValueError as e:
+            expect("read_load_columns message", str(e), f"{path}: missing column(s) contacts, horizontal_raw_N")
+        expect("read_summary without one", run_record.read_summary(run), None)
+        try:
+            run_record.require_summary(run)
+            failures.append("require_summary: a run without summary.json was not refused")
+        except FileNotFoundError as e:
+            expect("require_summary names the file", e.filename, run_record.summary_path(run))
+        os.remove(path)
+        try:
+            run_record.read_load_columns(run, ("pushed_length_m",))
+            failures.append("read_load_columns: a run without loads.csv was not refused")
+        except FileNotFoundError:
+            pass
+
     # A record as `thin_ice run` writes it: quick.yaml (2 panels), two snapshots.
     with tempfile.TemporaryDirectory() as out:
         cmd = [thin_ice, "run", "--scenario", os.path.join(source, "config/scenarios/quick.yaml"), "--until-time", "0.02",
@@ -100,6 +127,13 @@ def main():
         expect("snapshot files", [r["file"] for r in index], ["cells_000000.csv", "cells_000002.csv"])
         with open(os.path.join(snapshots, index[0]["file"])) as f:
             expect("snapshot columns", tuple(next(csv.reader(f))), run_record.SNAPSHOT_COLUMNS)
+        expect("read_snapshot_index", run_record.read_snapshot_index(out), index)
+        cells = run_record.read_snapshot_cells(out, index[0]["file"])
+        expect("read_snapshot_cells columns", tuple(cells[0].keys()), run_record.SNAPSHOT_COLUMNS)
+        expect("read_cells_file", run_record.read_cells_file(run_record.snapshot_path(out, index[0]["file"])), cells)
+        _, columns = run_record.read_load_columns(out, ("time_s", "horizontal_raw_N"))
+        expect("read_load_columns", columns["horizontal_raw_N"], [float(r["horizontal_raw_N"]) for r in rows])
+        expect("require_summary", run_record.require_summary(out), summary)
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
     print("run record: the mirror and a written record agree with run_record.hpp")

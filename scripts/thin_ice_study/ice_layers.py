@@ -49,8 +49,7 @@ fail = functools.partial(refuse, PROG)  # bad input: one line, exit status 2
 
 def layers(cells_csv, h, z_rest, toe_x):
     """{column: value} of one snapshot; the sheet's columns are None when it has no piece_cells."""
-    with open(cells_csv, newline="") as f:
-        cells = list(csv.DictReader(f))
+    cells = run_record.read_cells_file(cells_csv)
     size = sheet_size(cells)
     known = size is not None
     counts = {"cells_below": 0, "sheet_cells_below": 0, "cells_above": 0, "sheet_cells_above": 0,

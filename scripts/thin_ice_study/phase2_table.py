@@ -9,7 +9,6 @@ A run still in progress is reported as far as it got: its length beside the expe
 tail mean marked "not steady" where the rule in the code (include/thin_ice_sim/study/load_statistics.hpp)
 found no window. Nothing here is judged that the rule did not find.
 """
-import json
 import math
 import os
 import re
@@ -37,12 +36,12 @@ def runs_of(root, series):
             continue
         for name in sorted(os.listdir(base)):
             m = re.fullmatch(pattern, name)
-            if m and os.path.exists(os.path.join(base, name, "summary.json")):
+            if m and os.path.exists(run_record.summary_path(os.path.join(base, name))):
                 seed = m.group(1) or "1"
                 found.append((f"{kind}, seed {seed}", os.path.join(base, name)))
     for label, name in SHORT_SHEET_STRIPS.get(series, []):
         path = os.path.join(root, "strips", name)
-        if os.path.exists(os.path.join(path, "summary.json")):
+        if os.path.exists(run_record.summary_path(path)):
             found.append((label, path))
     return found
 
@@ -52,8 +51,7 @@ def pct(model, reference):
 
 
 def row(series, label, path):
-    with open(os.path.join(path, "summary.json")) as f:
-        s = json.load(f)
+    s = run_record.require_summary(path)
     width, load = s["structure_width_m"], s["load"]
     rescale = ALPHA / s["calibration_factor"]  # the statistics are of the run's own alpha F
     experiment = s.get("experiment") or {}
@@ -99,8 +97,7 @@ def checks(root, series, runs):
     fulls = [p for label, p in runs if label.startswith("full")]
     lengths = {}
     for p in strips + fulls:
-        with open(os.path.join(p, "summary.json")) as f:
-            lengths[p] = json.load(f)["pushed_length_m"]
+        lengths[p] = run_record.require_summary(p)["pushed_length_m"]
     if len(strips) >= 2:
         span = min(lengths[p] for p in strips)
         means = [span_mean(p, span) for p in strips]
@@ -153,8 +150,7 @@ def targets(root):
     summaries = {}
     for series in SERIES:
         for label, path in runs_of(root, series):
-            with open(os.path.join(path, "summary.json")) as f:
-                summaries[(series, label)] = json.load(f)
+            summaries[(series, label)] = run_record.require_summary(path)
     if not summaries:
         return []
 

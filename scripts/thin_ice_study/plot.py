@@ -13,7 +13,6 @@ Without --out each run is drawn to RUN_DIR/load.png; with --out all runs go into
 one panel per run. Snapshots (RUN_DIR/snapshots) are not drawn.
 """
 import argparse
-import csv
 import os
 import sys
 import textwrap
@@ -48,20 +47,12 @@ def read_run(run_dir):
         return bins["pushed_length_m"], bins["horizontal_calibrated_mean_N"], summary, f"means of {1000 * run_record.LOAD_BIN_LENGTH:.0f} mm bins"
     if path is None:
         sys.exit(f"{PROG}: {run_dir}: no loads.csv nor load_bins.csv (is it the --out directory of a `thin_ice run`?)")
+    try:
+        path, columns = run_record.read_load_columns(run_dir, ("pushed_length_m", "horizontal_calibrated_N"))
+    except ValueError as e:
+        sys.exit(f"{PROG}: {e}")
     note = "partial" if path.endswith(".partial") else ""
-    lengths, loads = [], []
-    with open(path, newline="") as f:
-        reader = csv.DictReader(f)
-        missing = {"pushed_length_m", "horizontal_calibrated_N"} - set(reader.fieldnames or [])
-        if missing:
-            sys.exit(f"{PROG}: {path}: missing column(s) {', '.join(sorted(missing))}")
-        for row in reader:
-            try:
-                length, load = float(row["pushed_length_m"]), float(row["horizontal_calibrated_N"])
-            except (TypeError, ValueError):
-                break  # a half-written last line of a partial file
-            lengths.append(length)
-            loads.append(load)
+    lengths, loads = columns["pushed_length_m"], columns["horizontal_calibrated_N"]
     if summary is None:
         note = ", ".join(n for n in (note, "no summary.json") if n)
     return lengths, loads, summary, note

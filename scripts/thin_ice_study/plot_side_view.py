@@ -12,8 +12,6 @@ usage: scripts/study plot_side_view RUN_DIR OUT_PNG [--snapshot FILE] [--reach M
 """
 import functools
 import argparse
-import csv
-import json
 import math
 import os
 import sys
@@ -61,10 +59,9 @@ def main(argv):
     if not a.reach > 0:
         fail(f"--reach {a.reach}; allowed: a length > 0 [m]")
     check_png_path(PROG, "OUT_PNG", a.out)
-    summary_path = os.path.join(a.run, run_record.SUMMARY_FILE)
+    summary_path = run_record.summary_path(a.run)
     try:
-        with open(summary_path) as f:
-            summary = json.load(f)
+        summary = run_record.require_summary(a.run)
     except OSError as e:
         fail(f"RUN_DIR {a.run}: cannot read summary.json ({e.strerror}); allowed: a finished (or interrupted) "
              "folder of `thin_ice run`")
@@ -77,8 +74,7 @@ def main(argv):
     structure, bottom = summary["structure"], summary["false_bottom"]
     toe, angle = structure["toe_x_m"], math.radians(structure["angle_deg"])
     name, length = snapshot_entry(a.run, a.snapshot)
-    with open(run_record.snapshot_path(a.run, name)) as f:
-        rows = list(csv.DictReader(f))
+    rows = run_record.read_snapshot_cells(a.run, name)
     size = sheet_size(rows)
     pieces = size is not None
     # (x, y, z, kind): kind 0 the sheet (or any bonded cell without piece sizes), 1 a floe, 2 a free block

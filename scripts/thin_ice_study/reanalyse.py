@@ -13,10 +13,9 @@ run cannot be analysed; the others are still done.
 """
 import argparse
 import datetime
-import json
-import os
 import sys
 
+from . import run_record
 from .run_summary import analyse, default_tool, replace_files, summary_text
 
 PROG = "scripts/study reanalyse"
@@ -27,13 +26,11 @@ def reanalyse(tool, run_dir, reason):
     """Returns a line saying what changed; raises RuntimeError, leaving the run as it was."""
     fresh = analyse(tool, run_dir)
     load, experiment = fresh["load"], fresh["experiment"]
-    path = os.path.join(run_dir, "summary.json")
-    with open(path) as f:
-        summary = json.load(f)
+    summary = run_record.require_summary(run_dir)
     old = summary.get("load") or {}
     summary["load"], summary["experiment"] = load, experiment
     summary.setdefault("reanalyses", []).append({"date": datetime.date.today().isoformat(), "why": reason})
-    replace_files({path: summary_text(summary)})
+    replace_files({run_record.summary_path(run_dir): summary_text(summary)})
     changed = [k for k in load if old.get(k) != load[k]]
     return "statistics worked out again; changed: " + (", ".join(changed) if changed else "nothing")
 

@@ -21,15 +21,14 @@ brought to its scenario's alpha, the one a resumed run would write. Exit status 
 cannot be brought over; the others are still done.
 """
 import argparse
-import csv
 import datetime
 import io
-import json
 import math
 import os
 import sys
 import tempfile
 
+from . import run_record
 from .run_summary import analyse, default_tool, replace_files, summary_text
 
 PROG = "scripts/study recalibrate"
@@ -63,8 +62,7 @@ def rewritten(path, targets, value):
     """The CSV file's text with the columns `targets(header)` (their indices) of every row set to
     value(row, column) [a number], written with the nine significant digits of `thin_ice run`, the
     other columns as they were. RunError names the file and the line where a row is not a record's."""
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
+    rows = run_record.read_table(path)
     if not rows:
         raise RunError(f"{path} is empty")
     header = rows[0]
@@ -109,23 +107,22 @@ def rescaled_bins(path, ratio):
 
 def recalibrate(run_dir, tool, alpha_new=None):
     """Returns a line saying what was done; raises RunError, leaving the run as it was."""
-    summary_path, loads_path = os.path.join(run_dir, "summary.json"), os.path.join(run_dir, "loads.csv")
-    bins_path = os.path.join(run_dir, "load_bins.csv")
+    summary_path, loads_path = run_record.summary_path(run_dir), os.path.join(run_dir, run_record.LOADS_FILE)
+    bins_path = os.path.join(run_dir, run_record.LOAD_BINS_FILE)
     if os.path.exists(loads_path + ".partial"):
         raise RunError("a run is still writing here (loads.csv.partial)")
     if not (os.path.exists(summary_path) and os.path.exists(bins_path)):
         raise RunError("no summary.json and load_bins.csv: not a finished run directory of `thin_ice run` (a run made "
                        "before load_bins.csv: `thin_ice analyse RUN_DIR --write-bins` writes it)")
     try:
-        with open(summary_path) as f:
-            summary = json.load(f)
+        summary = run_record.require_summary(run_dir)
     except (OSError, ValueError) as e:
         raise RunError(f"{summary_path}: {e}")
     alpha_run = check_alpha(summary.get("calibration_factor"), summary_path)
     if alpha_new is None:
         value, where = alpha_of_scenario(tool, run_dir, "give --alpha")
         alpha_new = check_alpha(value, where)
-    elif os.path.exists(os.path.join(run_dir, "checkpoint.bin")):
+    elif os.path.exists(os.path.join(run_dir, run_record.CHECKPOINT_FILE)):
         # A resumed run appends rows at its scenario's alpha: the record must already be at it.
         value, where = alpha_of_scenario(
             tool, run_dir, "a run with a checkpoint.bin is rescaled only to its scenario's alpha, so the "
@@ -145,9 +142,9 @@ def recalibrate(run_dir, tool, alpha_new=None):
     # The statistics of the new column, from a copy of the two files: the run stays as it was
     # until both are ready.
     with tempfile.TemporaryDirectory() as scratch:
-        with open(os.path.join(scratch, "load_bins.csv"), "w", newline="") as f:
+        with open(os.path.join(scratch, run_record.LOAD_BINS_FILE), "w", newline="") as f:
             f.write(bins_text)
-        with open(os.path.join(scratch, "summary.json"), "w") as f:
+        with open(run_record.summary_path(scratch), "w") as f:
             f.write(summary_text(summary))
         try:
             fresh = analyse(tool, scratch)

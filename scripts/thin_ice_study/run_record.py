@@ -41,6 +41,15 @@ def loads_path(run_dir):
     return path + ".partial" if os.path.exists(path + ".partial") else None
 
 
+def existing_loads_path(run_dir):
+    """loads_path, for a reader to whom the run must have rows: raises FileNotFoundError naming the
+    run where there is neither loads.csv nor loads.csv.partial."""
+    path = loads_path(run_dir)
+    if path is None:
+        raise FileNotFoundError(f"{run_dir}: no {LOADS_FILE} (nor {LOADS_FILE}.partial)")
+    return path
+
+
 def rows_are_whole_run(run_dir, summary):
     """True where the run's loads.csv holds every row of the run (not only the segments after a
     resumption from the kept record, summary.json's loads_csv_from_s > 0), or where a first segment
@@ -51,23 +60,64 @@ def rows_are_whole_run(run_dir, summary):
     return os.path.exists(os.path.join(run_dir, LOADS_FILE)) and not summary.get("loads_csv_from_s")
 
 
-def read_summary(run_dir):
-    """summary.json as a dict, or None where the run has none yet."""
-    path = os.path.join(run_dir, SUMMARY_FILE)
-    if not os.path.exists(path):
-        return None
-    with open(path) as f:
+def summary_path(run_dir):
+    """RUN/summary.json."""
+    return os.path.join(run_dir, SUMMARY_FILE)
+
+
+def require_summary(run_dir):
+    """summary.json as it was written (a dict in a record of `thin_ice run`), for a caller to whom
+    the run must have one; raises FileNotFoundError naming the file where it has none (OSError
+    where it cannot be read) and ValueError where it is not JSON."""
+    with open(summary_path(run_dir)) as f:
         return json.load(f)
+
+
+def read_summary(run_dir):
+    """summary.json as a dict, or None where the run has none yet; raises OSError where it cannot
+    be read and ValueError where it is not JSON."""
+    if not os.path.exists(summary_path(run_dir)):
+        return None
+    return require_summary(run_dir)
 
 
 def read_load_rows(run_dir):
     """loads.csv's rows as dicts of strings keyed by column (the partial file where there is no
     other); raises FileNotFoundError naming the run where there is neither."""
-    path = loads_path(run_dir)
-    if path is None:
-        raise FileNotFoundError(f"{run_dir}: no {LOADS_FILE} (nor {LOADS_FILE}.partial)")
-    with open(path) as f:
+    with open(existing_loads_path(run_dir)) as f:
         return list(csv.DictReader(f))
+
+
+def read_load_columns(run_dir, columns):
+    """(path, {column: [values]}) of loads.csv's `columns` as floats (each in the unit its name
+    ends with: m, s or N), from the partial file where there is no other; path is the file read.
+    The rows are read up to the first that is not whole (a half-written last line of
+    loads.csv.partial, its run still writing) and no further. Raises FileNotFoundError naming the
+    run where there is neither file, OSError where it cannot be read, and ValueError naming the
+    file and the missing columns where its header lacks one of `columns`."""
+    path = existing_loads_path(run_dir)
+    values = {name: [] for name in columns}
+    with open(path, newline="") as f:
+        reader = csv.DictReader(f)
+        missing = set(columns) - set(reader.fieldnames or [])
+        if missing:
+            raise ValueError(f"{path}: missing column(s) {', '.join(sorted(missing))}")
+        for row in reader:
+            try:
+                row_values = [float(row[name]) for name in columns]
+            except (TypeError, ValueError):
+                break  # a half-written last line of a partial file
+            for name, value in zip(columns, row_values):
+                values[name].append(value)
+    return path, values
+
+
+def read_table(path):
+    """A CSV file of the record (loads.csv, load_bins.csv) as it was written: one list of strings
+    per line, the header first, for the scripts that write it again (recalibrate) or a copy of it
+    cut short (steady_by_length); raises OSError where it cannot be read."""
+    with open(path, newline="") as f:
+        return list(csv.reader(f))
 
 
 def read_load_bins(run_dir):
@@ -120,3 +170,17 @@ def read_snapshot_index(run_dir):
 def snapshot_path(run_dir, name):
     """The cells file `name` of the run's snapshot index."""
     return os.path.join(run_dir, SNAPSHOT_DIR, name)
+
+
+def read_cells_file(path):
+    """A snapshot's cells file, by its path: its rows (one per cell) as dicts of strings keyed by
+    SNAPSHOT_COLUMNS (lengths in m, yaw in rad; older snapshots lack piece_cells); raises OSError
+    where it cannot be read."""
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f))
+
+
+def read_snapshot_cells(run_dir, name):
+    """The cells file `name` of the run's snapshot index (a "file" of read_snapshot_index) as
+    read_cells_file gives it; raises OSError where the run has no such file."""
+    return read_cells_file(snapshot_path(run_dir, name))

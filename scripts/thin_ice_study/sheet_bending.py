@@ -31,7 +31,6 @@ Prints a Markdown table, one row per snapshot.
 """
 import functools
 import argparse
-import csv
 import json
 import math
 import os
@@ -103,8 +102,7 @@ def strip_means(points, width):
 def profile_row(cells_csv, toe_x, reach, window, strip):
     """(lowest z [m], slope [-], (curvature [1/m], its standard error)) of the sheet in one snapshot,
     from its mean height in strips `strip` long."""
-    with open(cells_csv, newline="") as f:
-        cells = list(csv.DictReader(f))
+    cells = run_record.read_cells_file(cells_csv)
     size = sheet_size(cells)
     if size is None:
         return None

@@ -37,10 +37,9 @@ def verdict_rows(tool, run, step, first):
     """[(cut [m], load object, experiment object)] for the cuts first, first + step, ... and the end."""
     bins_path = os.path.join(run, run_record.LOAD_BINS_FILE)
     try:
-        with open(bins_path) as f:
-            header, *samples = f.read().splitlines()
-        column = header.split(",").index("pushed_length_m")
-        lengths = [float(line.split(",")[column]) for line in samples]
+        header, *samples = run_record.read_table(bins_path)
+        column = header.index("pushed_length_m")
+        lengths = [float(row[column]) for row in samples]
     except (OSError, ValueError) as e:
         fail(f"{run} has no readable {run_record.LOAD_BINS_FILE} with a pushed_length_m column ({e}; a run made "
              f"before it: `thin_ice analyse {run} --write-bins` writes it)")
@@ -56,10 +55,10 @@ def verdict_rows(tool, run, step, first):
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
         for cut in cuts:
-            shutil.copy(os.path.join(run, "summary.json"), tmp)
+            shutil.copy(run_record.summary_path(run), tmp)
             with open(os.path.join(tmp, run_record.LOAD_BINS_FILE), "w") as f:
-                f.write(header + "\n")
-                f.writelines(line + "\n" for line, x in zip(samples, lengths) if x <= cut + 1e-9)
+                f.write(",".join(header) + "\n")
+                f.writelines(",".join(row) + "\n" for row, x in zip(samples, lengths) if x <= cut + 1e-9)
             try:
                 answer = analyse(tool, tmp)
             except RuntimeError as e:
@@ -80,9 +79,9 @@ def main(argv):
     first = a.step if a.first is None else a.first
     if not first > 0:
         fail(f"--from {first:g}; allowed: a length > 0 m")
-    if not os.path.isfile(os.path.join(a.run, "summary.json")):
+    if not os.path.isfile(run_record.summary_path(a.run)):
         fail(f"{a.run} is not a finished run directory of `thin_ice run` (no summary.json)")
-    if os.path.exists(os.path.join(a.run, "loads.csv.partial")):
+    if os.path.exists(os.path.join(a.run, run_record.LOADS_FILE + ".partial")):
         fail(f"{a.run} is still being written (loads.csv.partial): its summary.json and loads.csv are of an "
              "earlier stop; allowed: a run that has stopped")
     tool = a.tool or default_tool(PROG)

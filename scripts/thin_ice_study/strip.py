@@ -22,7 +22,6 @@ Every other argument goes to `thin_ice run` unchanged. The overrides are printed
 and stored by `thin_ice run` in DIR/summary.json, so `thin_ice resume DIR` goes on with them.
 """
 import functools
-import json
 import math
 import os
 
@@ -96,8 +95,7 @@ def resume_snapshots(run_dir, until, args):
             length = float(value)
     if not snapshots:
         return ""
-    with open(os.path.join(run_dir, run_record.SUMMARY_FILE)) as f:
-        reached = float(json.load(f)["pushed_length_m"])
+    reached = float(run_record.require_summary(run_dir)["pushed_length_m"])
     target = length if until == "end" else float(until)  # "end": the pusher's travel, about --length
     segment = max(0.0, target - reached)
     return "--snapshots %d" % max(1, int(round(snapshots * segment / length)))

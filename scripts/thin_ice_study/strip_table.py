@@ -15,11 +15,11 @@ intact sheet's front stands: the distance from the toe to the centroid of the sh
 nearest to it, in each snapshot (negative: under or past the toe).
 """
 import argparse
-import csv
 import math
 import os
 import sys
 
+from . import run_record
 from .experiments import ALPHA, PEAK, STEADY_MEAN, per_metre
 from .strip_loads import read_run, window_means
 
@@ -32,18 +32,15 @@ EXPERIMENT_PER_METRE = {k: (per_metre(STEADY_MEAN[k]), per_metre(PEAK[k])) for k
 
 def front_distances(path, toe_x):
     """(pushed length, toe - x of the intact sheet's cell nearest the toe) per snapshot."""
-    index = os.path.join(path, "snapshots", "index.csv")
-    if not os.path.exists(index):
+    if not os.path.exists(run_record.snapshot_index_path(path)):
         return []
     out = []
-    with open(index) as f:
-        for entry in csv.DictReader(f):
-            front = -math.inf
-            with open(os.path.join(path, "snapshots", entry["file"])) as g:
-                for cell in csv.DictReader(g):
-                    if cell["in_intact_sheet"] == "1":
-                        front = max(front, float(cell["x_m"]))
-            out.append((float(entry["pushed_length_m"]), toe_x - front))
+    for entry in run_record.read_snapshot_index(path):
+        front = -math.inf
+        for cell in run_record.read_snapshot_cells(path, entry["file"]):
+            if cell["in_intact_sheet"] == "1":
+                front = max(front, float(cell["x_m"]))
+        out.append((float(entry["pushed_length_m"]), toe_x - front))
     return out
 
 
@@ -88,7 +85,7 @@ def main(argv):
             print("means per %.2f m [N/m]: %s" % (args.window, " ".join("%.0f" % m for _, m in means)))
             print()
             continue
-        series = summary.get("experiment", {}).get("series", "?")
+        series = (summary.get("experiment") or {}).get("series", "?")  # null for a scenario of no series
         load = summary["load"]
         overrides = [o for o in summary["scenario"]["overrides"]
                      if not o.split("=")[0] in ("sheet.width", "structure.width", "channel.width",

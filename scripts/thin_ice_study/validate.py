@@ -62,7 +62,7 @@ import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
 
-from . import ROOT, scenario_file
+from . import ROOT, run_record, scenario_file
 from .phase2_table import EXPERIMENT_LENGTH, SERIES
 from .refusal import refuse
 
@@ -74,7 +74,7 @@ STUDY = os.path.join(ROOT, "scripts", "study")
 DEFAULT_SLURM_WALL_BUDGET = 14400  # [s] a task's slice of wall time under Slurm before it requeues
 SLURM_TIME_MARGIN = 600  # [s] the array's --time beyond the wall budget: set-up and the last write
 NOTHING_TO_REPORT = 3  # validation_report's exit status for a folder without a run of Table 5's series
-RECORD_FILES = ("summary.json", "load.png", "load_bins.csv", "loads.csv", "profiles.csv")
+RECORD_FILES = (run_record.SUMMARY_FILE, "load.png", run_record.LOAD_BINS_FILE, run_record.LOADS_FILE, "profiles.csv")
 
 
 fail = functools.partial(refuse, PROG)  # bad input: one line, exit status 2
@@ -210,10 +210,11 @@ def matrix(o):
     return runs
 
 
-def completed_to(summary_path, length):
+def completed_to(run_dir, length):
+    """True where the run's summary.json says it completed to the pushed length `length` [m, as the
+    task gives it]; False where it says otherwise or has no summary (or one that cannot be read)."""
     try:
-        with open(summary_path) as f:
-            s = json.load(f)
+        s = run_record.require_summary(run_dir)
         return s["status"] == "completed" and abs(s["target"].get("pushed_length_m", -1) - float(length)) < 1e-9
     except (OSError, ValueError, KeyError, TypeError):
         return False
@@ -225,10 +226,10 @@ def plan(o):
     for name, series, overrides in matrix(o):
         length = o["until"] or default_length(series, name)
         record, run_dir = os.path.join(o["records"], name), os.path.join(o["work"], "validation", name)
-        if o["keep_existing"] and completed_to(os.path.join(record, "summary.json"), length):
+        if o["keep_existing"] and completed_to(record, length):
             say(f"{name}: kept ({record}/summary.json: completed to L = {length} m)")
             continue
-        has_checkpoint = os.path.isfile(os.path.join(record, "checkpoint.bin"))
+        has_checkpoint = os.path.isfile(os.path.join(record, run_record.CHECKPOINT_FILE))
         if not o["resume"] and has_checkpoint:
             # A run with a checkpoint in the records may be the history of several sessions:
             # starting it again from L = 0 would replace that history with a short new one.
@@ -246,8 +247,9 @@ def plan(o):
         if o["resume"]:
             # The kept record and the checkpoint go on; loads.csv too where this copy has it (a
             # clone keeps only the bins: the resumed run then writes the new rows alone).
-            for f in ("summary.json", "load_bins.csv", "checkpoint.bin", "loads.csv"):
-                if f != "loads.csv" or os.path.isfile(os.path.join(record, f)):
+            for f in (run_record.SUMMARY_FILE, run_record.LOAD_BINS_FILE, run_record.CHECKPOINT_FILE,
+                      run_record.LOADS_FILE):
+                if f != run_record.LOADS_FILE or os.path.isfile(os.path.join(record, f)):
                     shutil.copy(os.path.join(record, f), run_dir)
         tasks.append({"name": name, "series": series, "length": length, "overrides": o["sets"] + overrides,
                       "run_dir": run_dir, "record": record, "resumed": o["resume"],
@@ -301,9 +303,9 @@ def run_task(sweep, index_text):
     name, run_dir = task["name"], task["run_dir"]
     log_path = os.path.join(sweep, "logs", name + ".log")
     status_path = os.path.join(sweep, "status", name + ".json")
-    summary = os.path.join(run_dir, "summary.json")
-    if os.path.isfile(os.path.join(run_dir, "checkpoint.bin")) and os.path.isfile(summary):
-        if completed_to(summary, task["length"]) or (task["length"] == "end" and completed_status(summary)):
+    if (os.path.isfile(os.path.join(run_dir, run_record.CHECKPOINT_FILE))
+            and os.path.isfile(run_record.summary_path(run_dir))):
+        if completed_to(run_dir, task["length"]) or (task["length"] == "end" and completed_status(run_dir)):
             write_status(status_path, 0, "completed before")
             return 0
         command = ["--resume", run_dir]
@@ -357,10 +359,11 @@ def run_task(sweep, index_text):
     return code
 
 
-def completed_status(summary_path):
+def completed_status(run_dir):
+    """True where the run's summary.json says it completed; False where it says otherwise or has no
+    summary (or one that cannot be read)."""
     try:
-        with open(summary_path) as f:
-            return json.load(f)["status"] == "completed"
+        return run_record.require_summary(run_dir)["status"] == "completed"
     except (OSError, ValueError, KeyError):
         return False
 
@@ -456,18 +459,19 @@ def collect(sweep):
             if task["resumed"]:
                 say(f"{name}: {record} left as it was", sys.stderr)  # refused, or an unhealthy segment
                 continue
-        if not (os.path.isfile(os.path.join(run_dir, "load_bins.csv")) and os.path.isfile(os.path.join(run_dir, "summary.json"))):
+        if not (os.path.isfile(os.path.join(run_dir, run_record.LOAD_BINS_FILE))
+                and os.path.isfile(run_record.summary_path(run_dir))):
             say(f"{name}: no load_bins.csv and summary.json in {run_dir}: nothing copied", sys.stderr)
             continue
         subprocess.run([STUDY, "plot", run_dir], check=False)
         os.makedirs(record, exist_ok=True)
         # Each file copied beside its old one first and renamed over it: an interrupted copy leaves
         # the recorded file whole.
-        for f in RECORD_FILES + (("checkpoint.bin",) if task["keep_checkpoint"] else ()):
+        for f in RECORD_FILES + ((run_record.CHECKPOINT_FILE,) if task["keep_checkpoint"] else ()):
             if os.path.isfile(os.path.join(run_dir, f)):
                 shutil.copy(os.path.join(run_dir, f), os.path.join(record, f + ".new"))
                 os.replace(os.path.join(record, f + ".new"), os.path.join(record, f))
-            elif f == "checkpoint.bin":
+            elif f == run_record.CHECKPOINT_FILE:
                 if os.path.exists(os.path.join(record, f)):
                     os.remove(os.path.join(record, f))
     return failed, unfinished

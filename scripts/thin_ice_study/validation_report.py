@@ -14,13 +14,13 @@ in the folder (nothing to report, the old report left as it was).
 """
 import functools
 import argparse
-import json
 import os
 import sys
 
 from .experiments import ALPHA, PEAK, STEADY_MEAN, STRUCTURE_WIDTH
 from .phase2_plot import SMOOTHING, draw
 from .phase2_table import SERIES, phase2_table, runs_of, targets
+from . import run_record
 from .run_record import LOAD_BIN_LENGTH
 from .refusal import refuse
 
@@ -47,15 +47,14 @@ def check_runs(root):
     found = 0
     for series in SERIES:
         for _, path in runs_of(root, series):
-            summary_path = os.path.join(path, "summary.json")
+            summary_path = run_record.summary_path(path)
             try:
-                with open(summary_path) as f:
-                    summary = json.load(f)
+                summary = run_record.require_summary(path)
             except ValueError as e:
                 fail(f"{summary_path} is not JSON ({e}); allowed: a summary.json of `thin_ice run`")
             if not isinstance(summary, dict) or not isinstance(summary.get("load"), dict):
                 fail(f"{summary_path} has no \"load\" object; allowed: a summary.json of `thin_ice run`")
-            if not os.path.exists(os.path.join(path, "load_bins.csv")):
+            if not os.path.exists(os.path.join(path, run_record.LOAD_BINS_FILE)):
                 fail(f"{path} has no load_bins.csv (a run made before it: `thin_ice analyse {path} --write-bins` "
                      "writes it from its loads.csv)")
             found += 1
