@@ -196,6 +196,7 @@ long Simulation::stepCount() const { return backend_->stepCount(); }
 LoadSample Simulation::loads() const { return backend_->loads(); }
 std::vector<CellSnapshot> Simulation::cells() const { return backend_->cells(); }
 int Simulation::cellCount() const { return model_->cell_count; }
+const ModelConstants& Simulation::scene() const { return model_->constants; }
 std::string Simulation::backendName() const { return backend_->name(); }
 
 const char* Simulation::cpuInstructionSet() { return THIN_ICE_CPU_LEVEL_NAME; }

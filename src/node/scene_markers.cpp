@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "thin_ice_sim/model.hpp"  // ModelConstants: the scene as the laws use it
+
 namespace thin_ice {
 namespace {
 
@@ -91,7 +93,7 @@ visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const st
 
   // The structure: the inclined face from the bottom to its top, and the side panels.
   const StructureParams& s = p.structure;
-  const double z_low = -p.bottom.depth, z_high = s.height;
+  const double z_low = sim.scene().bottom_z, z_high = s.height;
   const double x_low = structureFaceX(s, z_low), x_high = structureFaceX(s, z_high);
   const double y0 = -0.5 * s.width, y1 = 0.5 * s.width;
   visualization_msgs::Marker structure = baseMarker(frame, stamp, "structure", visualization_msgs::Marker::TRIANGLE_LIST);
@@ -143,7 +145,7 @@ visualization_msgs::MarkerArray makeSceneMarkers(const Simulation& sim, const st
   array.markers.push_back(pusher);
 
   if (p.bottom.enabled) {
-    const double x_start = s.toe_x - p.bottom.distance_from_structure;
+    const double x_start = sim.scene().bottom_x_start;
     visualization_msgs::Marker bottom = baseMarker(frame, stamp, "bottom", visualization_msgs::Marker::CUBE);
     bottom.pose.position = point(0.5 * (x_start + x_high), 0.0, z_low - 0.01);
     bottom.scale.x = x_high - x_start;

@@ -46,8 +46,8 @@ inline std::string whyBottomCutsIce(const thin_ice::Simulation& sim, const std::
     return "--set '" + depth_set + "' with --resume: the run has no false bottom (bottom.enabled: false), so its "
            "depth would change nothing; allowed: bottom.depth only where bottom.enabled is true";
   }
-  const double bottom_z = -p.bottom.depth;                                               // [m]
-  const double bottom_x_start = p.structure.toe_x - p.bottom.distance_from_structure;    // [m]
+  const double bottom_z = sim.scene().bottom_z;               // [m]
+  const double bottom_x_start = sim.scene().bottom_x_start;   // [m]
   const double half_h = 0.5 * p.ice.thickness;                                           // [m]
   const double resting = 1e-3 * p.ice.thickness;  // [m] deeper than ice resting on the bottom sinks
   long below = 0;

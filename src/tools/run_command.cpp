@@ -541,8 +541,9 @@ constexpr double kMaxStepCount = 1e15;
 /// profiles.csv: into a directory that holds another run's files, the two runs' outputs would mix
 /// (old snapshots beside new loads). Refused, naming what is there.
 void refuseDirectoryWithRun(const std::string& dir) {
-  for (const char* name : {"summary.json", "loads.csv", "load_bins.csv", "loads.csv.partial", "checkpoint.bin", "snapshots",
-                           "profiles.csv", "unhealthy_segment.csv"}) {
+  namespace record = thin_ice::run_record;
+  for (const char* name : {record::kSummaryFile, record::kLoadsFile, record::kLoadBinsFile, record::kLoadsPartialFile,
+                           record::kCheckpointFile, record::kSnapshotDir, "profiles.csv", "unhealthy_segment.csv"}) {
     if (std::filesystem::exists(std::filesystem::path(dir) / name)) {
       throw UsageError("--out " + dir + " already holds a run (" + name +
                        "); allowed: a new or empty directory (remove it, or carry the run on with --resume " + dir + ")");

@@ -19,6 +19,7 @@ inline constexpr int kSummarySchemaVersion = 1;
 
 inline constexpr const char* kSummaryFile = "summary.json";
 inline constexpr const char* kLoadsFile = "loads.csv";          ///< written through loads.csv.partial
+inline constexpr const char* kLoadsPartialFile = "loads.csv.partial";  ///< loads.csv while its segment runs
 inline constexpr const char* kLoadBinsFile = "load_bins.csv";  ///< the kept record (load_bins.hpp)
 inline constexpr const char* kCheckpointFile = "checkpoint.bin";
 inline constexpr const char* kSnapshotDir = "snapshots";
