@@ -28,11 +28,29 @@ std::vector<std::string> splitCsvLine(const std::string& line) {
 YAML::Node loadSummary(const std::string& run_dir) {
   const std::string path = run_dir + "/" + run_record::kSummaryFile;
   if (!std::ifstream(path)) throw std::runtime_error("no " + path + ": not a run directory of `thin_ice run`");
+  YAML::Node summary;
   try {
-    return YAML::LoadFile(path);
+    summary = YAML::LoadFile(path);
   } catch (const YAML::Exception& e) {
     throw std::runtime_error(path + ": " + e.what());
   }
+  // A record without the field has layout 1 (run_record.hpp); a later layout may mean a field this
+  // reader knows by name something else, so it is refused rather than misread.
+  const YAML::Node version = summary.IsMap() ? summary["schema_version"] : YAML::Node();
+  if (version) {
+    int v = 0;
+    try {
+      v = version.as<int>();
+    } catch (const YAML::Exception&) {
+      v = -1;
+    }
+    if (v < 1 || v > run_record::kSummarySchemaVersion) {
+      throw std::runtime_error(path + ": \"schema_version\" is " + YAML::Dump(version) + "; allowed: 1 to " +
+                               std::to_string(run_record::kSummarySchemaVersion) +
+                               " (a record of a newer thin_ice is read by that thin_ice)");
+    }
+  }
+  return summary;
 }
 
 /// Appends `item` to `list`, after `separator` when the list is not empty.
