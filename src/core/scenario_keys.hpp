@@ -2,7 +2,8 @@
 // overrides through it): every key with its section, type, unit, physical range, whether it is
 // required and whether a resumption may switch it, and the keys that readings of the paper once
 // had and the runs rejected. One registry: the loader, the range checks, the resume policy
-// (switchableOnResumeKeys) and the key list of the docs all read it.
+// (switchableOnResumeKeys) and `thin_ice parameters` (every key of a scenario as resolved, the
+// list the README points to) all read it.
 #pragma once
 
 #include <yaml-cpp/yaml.h>
