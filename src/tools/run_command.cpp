@@ -88,21 +88,13 @@ using thin_ice::run_record::loadsRow;
 /// Writes snapshots/cells_ROW.csv and its line in snapshots/index.csv; returns the file's name.
 std::string writeSnapshot(const Simulation& sim, const std::string& dir, long row) {
   const std::vector<thin_ice::CellSnapshot> cells = sim.cells();
-  std::ostringstream text;
-  text.precision(9);
-  text << thin_ice::run_record::headerLine(thin_ice::run_record::kSnapshotColumns);
-  for (std::size_t k = 0; k < cells.size(); ++k) {
-    const thin_ice::CellSnapshot& c = cells[k];
-    text << k << ',' << c.x << ',' << c.y << ',' << c.z << ',' << c.yaw << ','
-         << (c.in_intact_sheet ? 1 : 0) << ',' << c.piece_cells << ',';
-    const std::vector<thin_ice::Vec2> polygon = sim.cellPolygon(static_cast<int>(k), c);
-    for (std::size_t v = 0; v < polygon.size(); ++v) text << (v ? " " : "") << polygon[v].x << ' ' << polygon[v].y;
-    text << '\n';
-  }
+  std::vector<std::vector<thin_ice::Vec2>> polygons;
+  polygons.reserve(cells.size());
+  for (std::size_t k = 0; k < cells.size(); ++k) polygons.push_back(sim.cellPolygon(static_cast<int>(k), cells[k]));
   const std::string name = thin_ice::run_record::snapshotFileName(row);
-  thin_ice::writeFileAtomically(dir + "/" + name, text.str());
-  std::ofstream index(dir + "/" + thin_ice::run_record::kSnapshotIndexFile, std::ios::app);  // file, time, length
-  index << name << ',' << sim.time() << ',' << sim.pushedLength() << '\n';
+  thin_ice::writeFileAtomically(dir + "/" + name, thin_ice::run_record::snapshotText(cells, polygons));
+  std::ofstream index(dir + "/" + thin_ice::run_record::kSnapshotIndexFile, std::ios::app);
+  index << thin_ice::run_record::snapshotIndexRow(name, sim.time(), sim.pushedLength());
   return name;
 }
 
@@ -254,73 +246,58 @@ void writeProfiles(const Simulation& sim, const std::string& path) {
   thin_ice::writeFileAtomically(path, thin_ice::rubbleProfilesCsv(thin_ice::computeRubbleProfiles(sim.cells(), sim.params())));
 }
 
+/// What summary.json records of this run (run_record.hpp owns the file's layout).
 std::string summaryJson(const Simulation& sim, const Options& o, const RunResult& r, const Continuation& cont,
                         const thin_ice::LoadStatistics& s, double setup_wall) {
   const double wall = cont.previous_wall + r.wall;  // [s] of every segment
   const thin_ice::Scenario& sc = sim.scenario();
+  const thin_ice::Params& p = sim.params();
   const LoadSample& last = r.last;  // after a blow-up sim.loads() is not to be trusted
   const double cell_steps = double(sim.cellCount()) * double(sim.stepCount());
-  std::ostringstream j;
-  auto num = [](double v) { return jsonNumber(v); };
-  const char* status = !r.error.empty() ? "unhealthy" : r.interrupted_by != 0 ? "interrupted" : "completed";
-  j << "{\n  \"schema_version\": " << thin_ice::run_record::kSummarySchemaVersion
-    << ",\n  \"status\": " << jsonString(status)
-    << ",\n  \"error\": " << (r.error.empty() ? "null" : jsonString(r.error))
-    << ",\n  \"scenario\": {\"name\": " << jsonString(sc.name) << ", \"file\": "
-    << jsonString(sc.source) << ", \"hash\": " << jsonString(sc.hash) << ", \"overrides\": [";
-  for (std::size_t k = 0; k < sc.overrides.size(); ++k) {
-    j << (k ? ", " : "") << jsonString(sc.overrides[k]);
-  }
-  // The whole parameter set in force at the end, so that a resumption keeps the run's own values
-  // whatever the scenario file says by then (thin_ice_sim/study/run_directory.hpp).
-  j << "]},\n  \"parameters\": {";
-  const std::vector<thin_ice::ParameterValue> parameters = thin_ice::scenarioParameters(sim.params());
-  for (std::size_t k = 0; k < parameters.size(); ++k) {
-    j << (k ? ", " : "") << jsonString(parameters[k].key) << ": " << jsonString(parameters[k].value);
-  }
-  j << "},\n  \"backend\": " << jsonString(sim.backendName())
-    << ", \"backend_note\": " << jsonString(sim.backendNote())
-    << ", \"cpu_instruction_set\": " << jsonString(Simulation::cpuInstructionSet())
-    << ",\n  \"cells\": " << sim.cellCount() << ", \"time_step_s\": " << num(sim.timeStep())
-    << ", \"critical_time_step_s\": " << num(sim.criticalTimeStep())
-    << ", \"structure_substeps\": " << sim.structureSubsteps()
-    << ", \"structure_critical_time_step_s\": " << num(sim.structureCriticalTimeStep())
-    << ",\n  \"output_interval_s\": " << num(o.output_interval)
-    << ", \"loads_csv_from_s\": " << num(cont.loads_csv_from)
-    << ", \"load_bin_length_m\": " << num(thin_ice::kLoadBinLength)
-    << ",\n  \"target\": {\"" << (o.until_length > 0.0 ? "pushed_length_m" : "time_s") << "\": "
-    << num(o.until_length > 0.0 ? o.until_length : o.until_time) << "}"
-    << ",\n  \"steps\": " << sim.stepCount() << ", \"simulated_time_s\": " << num(sim.time())
-    << ", \"pushed_length_m\": " << num(sim.pushedLength())
-    << ",\n  \"setup_wall_time_s\": " << num(setup_wall) << ", \"wall_time_s\": " << num(wall)
-    << ",\n  \"cell_steps_per_second\": " << num(wall > 0.0 ? cell_steps / wall : NAN)
-    << ", \"real_time_factor\": " << num(wall > 0.0 ? sim.time() / wall : NAN);
-  j << ",\n  \"resumed_at_m\": [";
-  for (std::size_t k = 0; k < cont.resumed_at.size(); ++k) j << (k ? ", " : "") << num(cont.resumed_at[k]);
-  j << "],\n  \"overrides_from_m\": [";
-  for (std::size_t k = 0; k < cont.switched.size(); ++k) {
-    j << (k ? ", " : "") << "{\"set\": " << jsonString(cont.switched[k].set)
-      << ", \"from_m\": " << num(cont.switched[k].from_length) << "}";
-  }
-  j << "]"
-    << ",\n  \"intact_bonds\": " << last.intact_bonds << ", \"broken_bonds\": " << last.broken_bonds
-    << ",\n  \"calibration_factor\": " << num(sc.params.structure.calibration_factor)
-    << ",\n  \"load\": " << thin_ice::loadJson(s, r.first_failure_length);
-  j << ",\n  \"structure_width_m\": " << num(sim.params().structure.width);
-  // The geometry the run used, overrides applied, so that a reader (the validation report's
-  // profile plots) draws the face without re-reading the scenario file.
-  const thin_ice::StructureParams& st = sim.params().structure;
-  j << ",\n  \"structure\": {\"toe_x_m\": " << num(st.toe_x) << ", \"angle_deg\": " << num(st.angle_deg)
-    << ", \"width_m\": " << num(st.width) << ", \"height_m\": " << num(st.height)
-    << ", \"panels\": " << st.panels << "}";
-  j << ",\n  \"false_bottom\": " << (sim.params().bottom.enabled ? "" : "null");
-  if (sim.params().bottom.enabled) {
-    j << "{\"depth_m\": " << num(sim.params().bottom.depth)
-      << ", \"distance_from_structure_m\": " << num(sim.params().bottom.distance_from_structure) << "}";
-  }
-  j << ",\n  \"experiment\": " << thin_ice::experimentJson(sc.name, sim.params().structure.width, s);
-  j << "\n}\n";
-  return j.str();
+  thin_ice::run_record::SummaryRecord record;
+  record.status = !r.error.empty() ? "unhealthy" : r.interrupted_by != 0 ? "interrupted" : "completed";
+  record.error = r.error;
+  record.scenario_name = sc.name;
+  record.scenario_file = sc.source;
+  record.scenario_hash = sc.hash;
+  record.overrides = sc.overrides;
+  record.parameters = thin_ice::scenarioParameters(p);
+  record.backend = sim.backendName();
+  record.backend_note = sim.backendNote();
+  record.cpu_instruction_set = Simulation::cpuInstructionSet();
+  record.cells = sim.cellCount();
+  record.time_step = sim.timeStep();
+  record.critical_time_step = sim.criticalTimeStep();
+  record.structure_substeps = sim.structureSubsteps();
+  record.structure_critical_time_step = sim.structureCriticalTimeStep();
+  record.output_interval = o.output_interval;
+  record.loads_csv_from = cont.loads_csv_from;
+  record.load_bin_length = thin_ice::kLoadBinLength;
+  record.target_is_length = o.until_length > 0.0;
+  record.target = record.target_is_length ? o.until_length : o.until_time;
+  record.steps = sim.stepCount();
+  record.simulated_time = sim.time();
+  record.pushed_length = sim.pushedLength();
+  record.setup_wall_time = setup_wall;
+  record.wall_time = wall;
+  record.cell_steps_per_second = wall > 0.0 ? cell_steps / wall : NAN;
+  record.real_time_factor = wall > 0.0 ? sim.time() / wall : NAN;
+  record.resumed_at = cont.resumed_at;
+  for (const thin_ice::SwitchedOverride& w : cont.switched) record.overrides_from.push_back({w.set, w.from_length});
+  record.intact_bonds = last.intact_bonds;
+  record.broken_bonds = last.broken_bonds;
+  record.calibration_factor = sc.params.structure.calibration_factor;
+  record.load_json = thin_ice::loadJson(s, r.first_failure_length);
+  record.structure_width = p.structure.width;
+  record.toe_x = p.structure.toe_x;
+  record.angle_deg = p.structure.angle_deg;
+  record.structure_height = p.structure.height;
+  record.panels = p.structure.panels;
+  record.false_bottom = p.bottom.enabled;
+  record.bottom_depth = p.bottom.depth;
+  record.bottom_distance_from_structure = p.bottom.distance_from_structure;
+  record.experiment_json = thin_ice::experimentJson(sc.name, p.structure.width, s);
+  return thin_ice::run_record::summaryJson(record);
 }
 
 void printReport(const Simulation& sim, const Options& o, const thin_ice::LoadStatistics& s) {

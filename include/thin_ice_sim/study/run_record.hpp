@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "thin_ice_sim/load_sample.hpp"
+#include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/study/load_bins.hpp"
 
 namespace thin_ice::run_record {
@@ -86,6 +87,10 @@ inline constexpr const char* kSnapshotColumns[] = {
     snapshot_column::kZ,    snapshot_column::kYaw,      snapshot_column::kInIntactSheet,
     snapshot_column::kPieceCells, snapshot_column::kPolygon};
 
+/// A snapshot file's text: the header and one row per cell, `polygons[k]` cell k's world polygon
+/// [m] (nine significant digits).
+std::string snapshotText(const std::vector<CellSnapshot>& cells, const std::vector<std::vector<Vec2>>& polygons);
+
 /// snapshots/index.csv: one row per snapshot file.
 namespace index_column {
 inline constexpr const char* kFile = "file";
@@ -94,6 +99,53 @@ inline constexpr const char* kPushedLength = "pushed_length_m";  ///< [m]
 }  // namespace index_column
 inline constexpr const char* kSnapshotIndexColumns[] = {index_column::kFile, index_column::kTime,
                                                         index_column::kPushedLength};
+
+/// One line of snapshots/index.csv: the file, its time [s] and pushed length [m] (six significant
+/// digits).
+std::string snapshotIndexRow(const std::string& file, double time, double pushed_length);
+
+/// summary.json: what `thin_ice run` records of a run as a whole, written by summaryJson from this
+/// and read back by run_directory.cpp (readRunSummary, loadRunScenario). A field that changes its
+/// meaning or leaves raises kSummarySchemaVersion.
+struct SummaryRecord {
+  std::string status;                      ///< completed, interrupted or unhealthy
+  std::string error;                       ///< why a run stopped unhealthy ("" writes null)
+  std::string scenario_name, scenario_file, scenario_hash;
+  std::vector<std::string> overrides;      ///< the run's --set, as given at its start
+  std::vector<ParameterValue> parameters;  ///< the whole parameter set in force at the end
+  std::string backend, backend_note, cpu_instruction_set;
+  int cells = 0;
+  double time_step = 0.0, critical_time_step = 0.0;  ///< [s]
+  int structure_substeps = 1;
+  double structure_critical_time_step = 0.0;          ///< [s]
+  double output_interval = 0.0;                       ///< [s] of a row of loads.csv
+  double loads_csv_from = 0.0;                        ///< [s] where loads.csv's first row begins
+  double load_bin_length = 0.0;                       ///< [m] of a bin of load_bins.csv
+  bool target_is_length = false;                      ///< the target: pushed length [m], or time [s]
+  double target = 0.0;
+  long steps = 0;
+  double simulated_time = 0.0, pushed_length = 0.0;   ///< [s], [m]
+  double setup_wall_time = 0.0, wall_time = 0.0;      ///< [s] of wall-clock time, every segment's
+  double cell_steps_per_second = 0.0, real_time_factor = 0.0;
+  std::vector<double> resumed_at;                     ///< [m] where each resumption began
+  struct Switch {
+    std::string set;     ///< "section.key=value" given at a resumption
+    double from_length;  ///< [m] where it began to apply
+  };
+  std::vector<Switch> overrides_from;
+  int intact_bonds = 0, broken_bonds = 0;
+  double calibration_factor = 1.0;                    ///< alpha of Eq. (18)
+  std::string load_json;                              ///< the statistics (run_report.hpp, loadJson)
+  double structure_width = 0.0;                       ///< [m]
+  double toe_x = 0.0, angle_deg = 0.0, structure_height = 0.0;  ///< [m], [deg], [m]
+  int panels = 1;
+  bool false_bottom = false;
+  double bottom_depth = 0.0, bottom_distance_from_structure = 0.0;  ///< [m]
+  std::string experiment_json;                        ///< the comparison (run_report.hpp, experimentJson)
+};
+
+/// summary.json's text for `r`.
+std::string summaryJson(const SummaryRecord& r);
 
 /// "panel_K_N" for panel K (1-based).
 std::string panelColumn(int panel);
