@@ -28,6 +28,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.dirname(os.path.abspath(__file__))), "scripts"))
+from thin_ice_study import run_record  # noqa: E402
 from thin_ice_study.png_output import save_png  # noqa: E402
 
 import device_results  # noqa: E402  (beside this file)
@@ -176,15 +177,15 @@ def kernels_section(run, lines):
 
 
 def window_text(run, sim_time):
-    """What happened in thin_ice_sim's comparison window, read off its loads.csv."""
-    path = os.path.join(run, "tim_dem", "loads.csv")
+    """What happened in thin_ice_sim's comparison window, read off its loads.csv (through the run
+    record's reader, scripts/thin_ice_study/run_record.py)."""
+    tim_dem = os.path.join(run, "tim_dem")
     contact, broken = None, 0
-    if os.path.exists(path):
-        with open(path) as f:
-            for r in csv.DictReader(f):
-                if contact is None and float(r["horizontal_raw_N"]) > 0.0:
-                    contact = float(r["time_s"])
-                broken = int(r["broken_bonds"])
+    if os.path.exists(os.path.join(tim_dem, run_record.LOADS_FILE)):
+        for r in run_record.read_load_rows(tim_dem):
+            if contact is None and float(r[run_record.HORIZONTAL_RAW]) > 0.0:
+                contact = float(r[run_record.TIME])
+            broken = int(r[run_record.BROKEN_BONDS])
     if contact is None:
         return (f"The window is the first {sim_time:.3g} s of pushing: thin_ice_sim's sheet has not reached the "
                 "structure in it, so this is the cost of the intact sheet being pushed, before any breaking or piling.")

@@ -2,7 +2,9 @@
 """The scripts' mirror of the run record (scripts/thin_ice_study/run_record.py) against its owner
 (include/thin_ice_sim/study/run_record.hpp) and against a record `thin_ice run` writes: the same file
 names, columns and schema version, so that a column renamed on one side and not the other fails
-here rather than in a plot.
+here rather than in a plot. Each named constant of the mirror is the column of run_record.hpp of
+the same name (PUSHED_LENGTH: load_column::kPushedLength, bin_column::kPushedLength ...) or a
+field of the summary.json `thin_ice run` writes; one that is neither fails.
 
     test_run_record.py THIN_ICE SOURCE_DIR   (THIN_ICE: the thin_ice program)
 """
@@ -39,6 +41,39 @@ def cpp_names(header_text):
             array("kLoadBinColumns"))
 
 
+def camel(name):
+    """run_record.hpp's name of the mirror's constant `name`: PUSHED_LENGTH -> kPushedLength."""
+    return "k" + "".join(part.capitalize() for part in name.split("_"))
+
+
+COLUMN_NAMESPACES = ("load_column", "bin_column", "snapshot_column", "index_column")
+FILE_NAMES = {"kSummaryFile": "SUMMARY_FILE", "kLoadsFile": "LOADS_FILE", "kLoadBinsFile": "LOAD_BINS_FILE",
+              "kCheckpointFile": "CHECKPOINT_FILE", "kSnapshotDir": "SNAPSHOT_DIR",
+              "kSnapshotIndexFile": "SNAPSHOT_INDEX_FILE"}
+
+
+def named_constants(run_record, constants):
+    """Failures where an upper-case string constant of the mirror (but the file names) is neither
+    the column of run_record.hpp of the same name, in every column namespace that has one, nor, where
+    none has, a field listed in SUMMARY_FIELDS (which the written summary is checked for)."""
+    failures = []
+    column_names = {text for key, text in constants.items() if key.split("::")[0] in COLUMN_NAMESPACES}
+    for name, value in vars(run_record).items():
+        if not (name.isupper() and isinstance(value, str)) or name in FILE_NAMES.values():
+            continue
+        cpp = {f"{ns}::{camel(name)}": constants[f"{ns}::{camel(name)}"] for ns in COLUMN_NAMESPACES
+               if f"{ns}::{camel(name)}" in constants}
+        if cpp:
+            failures += [f"{name} = {value!r}: {key} is {text!r}" for key, text in cpp.items() if text != value]
+        elif value in column_names:
+            failures.append(f"{name} = {value!r}: a column under a name run_record.hpp does not give it "
+                            f"({camel(name)} in none of {', '.join(COLUMN_NAMESPACES)})")
+        elif value not in run_record.SUMMARY_FIELDS:
+            failures.append(f"{name} = {value!r} names no column of run_record.hpp ({camel(name)} in "
+                            f"{', '.join(COLUMN_NAMESPACES)}) and is not in SUMMARY_FIELDS")
+    return failures
+
+
 def main():
     thin_ice, source = sys.argv[1], sys.argv[2]
     sys.path.insert(0, os.path.join(source, "scripts"))
@@ -57,15 +92,21 @@ def main():
     expect("LOAD_BIN_LENGTH", run_record.LOAD_BIN_LENGTH, bin_length)
     expect("LOAD_BIN_COLUMNS", run_record.LOAD_BIN_COLUMNS, bin_columns)
     expect("schema version", run_record.SUMMARY_SCHEMA_VERSION, version)
-    for cpp, py in (("kSummaryFile", "SUMMARY_FILE"), ("kLoadsFile", "LOADS_FILE"), ("kLoadBinsFile", "LOAD_BINS_FILE"),
-                    ("kCheckpointFile", "CHECKPOINT_FILE"), ("kSnapshotDir", "SNAPSHOT_DIR"),
-                    ("kSnapshotIndexFile", "SNAPSHOT_INDEX_FILE")):
+    for cpp, py in FILE_NAMES.items():
         expect(py, getattr(run_record, py), constants[cpp])
+    failures += named_constants(run_record, constants)
     expect("LOAD_COLUMNS", run_record.LOAD_COLUMNS, load_columns)
     expect("SNAPSHOT_COLUMNS", run_record.SNAPSHOT_COLUMNS, snapshot_columns)
     expect("SNAPSHOT_INDEX_COLUMNS", run_record.SNAPSHOT_INDEX_COLUMNS, index_columns)
     if len(load_columns) != 9:  # the parse found the array (nine columns before the panels)
         failures.append(f"parsed {len(load_columns)} load columns from run_record.hpp, expected 9")
+
+    # alpha of Eq. (18): applied to a raw load, undone, and a load at one alpha brought to another.
+    for what, got, wanted in (("calibrated(10, 0.63)", run_record.calibrated(10.0, 0.63), 6.3),
+                              ("raw_of(6.3, 0.63)", run_record.raw_of(6.3, 0.63), 10.0),
+                              ("at_alpha(6.3, 0.63, 1.7)", run_record.at_alpha(6.3, 0.63, 1.7), 17.0)):
+        if abs(got - wanted) > 1e-12:
+            failures.append(f"{what}: {got}, expected {wanted}")
 
     # mean_over weights each bin by the time it covers, over the bins ending in (begin, end]:
     # (10 * 0.7 + 20 * 0.7 + 40 * 0.35) / 1.75 = 20; without the first bin 28 / 1.05 = 26.67.
@@ -111,7 +152,9 @@ def main():
         if done.returncode != 0:
             sys.exit(f"FAIL: exit status {done.returncode}: {done.stderr.strip()}")
         summary = run_record.read_summary(out)
-        expect("summary schema_version", summary.get("schema_version"), run_record.SUMMARY_SCHEMA_VERSION)
+        expect("summary schema_version", summary.get(run_record.SCHEMA_VERSION), run_record.SUMMARY_SCHEMA_VERSION)
+        expect("SUMMARY_FIELDS missing from the summary `thin_ice run` writes",
+               sorted(set(run_record.SUMMARY_FIELDS) - set(summary)), [])
         rows = run_record.read_load_rows(out)
         expect("loads.csv columns", tuple(rows[0].keys()),
                run_record.LOAD_COLUMNS + (run_record.panel_column(1), run_record.panel_column(2)))

@@ -23,7 +23,8 @@ ICE_TYPE = {k: v["name"] for k, v in _DATA["ice_types"].items()}
 PAPER_TIM = {k: (v["paper_tim"]["peak"], v["paper_tim"]["steady_mean"]) for k, v in _DATA["ice_types"].items()}
 PUSHED_LENGTH = {k: float(v) for k, v in _DATA["pushed_length"].items()}  # [m] per series (Table 5)
 # alpha [-] of Eq. (18), the paper's one factor (Section 5.1.1): structure.calibration_factor of
-# config/scenarios/base/tank.yaml. Runs recorded with another alpha are rescaled to it in the reports.
+# config/scenarios/base/tank.yaml. Runs recorded with another alpha are rescaled to it in the reports
+# (run_record.at_alpha).
 ALPHA = float(scenario_file.load(os.path.join(ROOT, "config", "scenarios", "base", "tank.yaml"))
               ["structure"]["calibration_factor"])
 

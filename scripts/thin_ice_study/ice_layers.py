@@ -56,20 +56,20 @@ def layers(cells_csv, h, z_rest, toe_x):
               "free_blocks": 0, "sheet_cells": 0, "farthest_broken_below_from_toe_m": 0.0,
               "sheet_nearest_to_toe_m": None}
     for c in cells:
-        z = float(c["z_m"])
-        in_sheet = known and int(c["piece_cells"]) == size
+        z = float(c[run_record.Z])
+        in_sheet = known and int(c[run_record.PIECE_CELLS]) == size
         counts["sheet_cells"] += in_sheet
         if in_sheet:
-            gap = toe_x - float(c["x_m"])
+            gap = toe_x - float(c[run_record.X])
             nearest = counts["sheet_nearest_to_toe_m"]
             counts["sheet_nearest_to_toe_m"] = gap if nearest is None else min(nearest, gap)
-        counts["free_blocks"] += c["in_intact_sheet"] != "1"
+        counts["free_blocks"] += c[run_record.IN_INTACT_SHEET] != "1"
         if z < z_rest - 0.5 * h:
             counts["cells_below"] += 1
             counts["sheet_cells_below"] += in_sheet
             if not in_sheet:
                 counts["farthest_broken_below_from_toe_m"] = max(counts["farthest_broken_below_from_toe_m"],
-                                                                 toe_x - float(c["x_m"]))
+                                                                 toe_x - float(c[run_record.X]))
         elif z > z_rest + 0.5 * h:
             counts["cells_above"] += 1
             counts["sheet_cells_above"] += in_sheet
@@ -88,17 +88,17 @@ def run_table(run):
         fail(f"{run} is not a finished run with snapshots ({e})")
     if summary is None:
         fail(f"{run} is not a finished run with snapshots (no {run_record.SUMMARY_FILE})")
-    if "structure" not in summary:
+    if run_record.STRUCTURE not in summary:
         fail(f"{run}/summary.json has no structure geometry (older `thin_ice run` records lack it)")
     try:
         h, z_rest = floating_level(summary)
     except ValueError as e:
         fail(str(e))
-    toe_x = summary["structure"]["toe_x_m"]
+    toe_x = summary[run_record.STRUCTURE]["toe_x_m"]
     rows = []
     for e in index:
-        row = layers(run_record.snapshot_path(run, e["file"]), h, z_rest, toe_x)
-        row["pushed_length_m"] = float(e["pushed_length_m"])
+        row = layers(run_record.snapshot_path(run, e[run_record.FILE]), h, z_rest, toe_x)
+        row["pushed_length_m"] = float(e[run_record.PUSHED_LENGTH])
         rows.append(row)
     show = lambda v: "-" if v is None else str(v)  # noqa: E731
     metres = lambda v: "-" if v is None else f"{v:.2f}"  # noqa: E731
@@ -119,7 +119,8 @@ def load_windows(run, width=0.1):
     `width` long: the bins whose end length falls in each, weighted by the time they cover."""
     bins = run_record.read_load_bins(run)
     sums = {}
-    for length, mean, duration in zip(bins["pushed_length_m"], bins["horizontal_calibrated_mean_N"], bins["duration_s"]):
+    for length, mean, duration in zip(bins[run_record.PUSHED_LENGTH], bins[run_record.CALIBRATED_MEAN],
+                                      bins[run_record.DURATION]):
         k = int(length / width)
         weighted, covered = sums.get(k, (0.0, 0.0))
         sums[k] = (weighted + mean * duration, covered + duration)
@@ -180,9 +181,9 @@ def plot(tables, out):
     fig, (load, count) = plt.subplots(2, 1, figsize=(10, 7.5), sharex=True)
     for k, (run, summary, rows) in enumerate(tables):
         colour = f"C{k}"
-        overrides = summary["scenario"].get("overrides", [])
+        overrides = summary[run_record.SCENARIO].get("overrides", [])
         name = os.path.basename(os.path.normpath(run))
-        label = f"{name} ({summary['scenario']['name']}"
+        label = f"{name} ({summary[run_record.SCENARIO]['name']}"
         label += (", " + ", ".join(overrides) + ")") if overrides else ")"
         x, f = load_windows(run)
         load.plot(x, f, "-", color=colour, label=label)

@@ -17,14 +17,14 @@ def per_metre_windows(path):
     """([window ends, m], [alpha F per metre of width, N/m]) of a run over windows SMOOTHING long."""
     summary = run_record.read_summary(path)
     bins = run_record.read_load_bins(path)
-    scale = ALPHA / summary["calibration_factor"] / summary["structure_width_m"]
-    end = bins["pushed_length_m"][-1] if bins["bin"] else 0.0
+    run_alpha, width = summary[run_record.CALIBRATION_FACTOR], summary[run_record.STRUCTURE_WIDTH]
+    end = bins[run_record.PUSHED_LENGTH][-1] if bins[run_record.BIN] else 0.0
     xs, ys, k = [], [], 0
     while (k + 1) * SMOOTHING <= end + 1e-9:
         mean = run_record.mean_over(bins, k * SMOOTHING, (k + 1) * SMOOTHING)
         if mean is not None:
             xs.append((k + 1) * SMOOTHING)
-            ys.append(scale * mean)
+            ys.append(run_record.at_alpha(mean, run_alpha, ALPHA) / width)
         k += 1
     return xs, ys
 

@@ -52,27 +52,27 @@ def pct(model, reference):
 
 def row(series, label, path):
     s = run_record.require_summary(path)
-    width, load = s["structure_width_m"], s["load"]
-    rescale = ALPHA / s["calibration_factor"]  # the statistics are of the run's own alpha F
-    experiment = s.get("experiment") or {}
+    width, load = s[run_record.STRUCTURE_WIDTH], s[run_record.LOAD]
+    run_alpha = s[run_record.CALIBRATION_FACTOR]  # the statistics are of the run's own alpha F
+    experiment = s.get(run_record.EXPERIMENT) or {}
     scale = experiment.get("width_scale", width / 10.0)
     exp_mean = experiment.get("steady_mean_N", float("nan")) / scale / 10.0
     exp_peak = experiment.get("peak_N", float("nan")) / scale / 10.0
-    mean = rescale * load["steady_mean_N"] / width
+    mean = run_record.at_alpha(load["steady_mean_N"], run_alpha, ALPHA) / width
     steady = bool(load.get("steady_found"))
     window = load.get("steady_window_m") or [float("nan"), float("nan")]
-    peak = rescale * load["peak_N"] / width
-    cells = [series, label, f"{s['pushed_length_m']:.2f} ({EXPERIMENT_LENGTH[series]})"]
+    peak = run_record.at_alpha(load["peak_N"], run_alpha, ALPHA) / width
+    cells = [series, label, f"{s[run_record.PUSHED_LENGTH]:.2f} ({EXPERIMENT_LENGTH[series]})"]
     if steady:
         cells += [f"{window[0]:.2f}-{window[1]:.2f}", f"{mean:.0f} ({exp_mean:.0f})",
                   f"{pct(mean, exp_mean):+.1f} %", "met" if abs(pct(mean, exp_mean)) <= TARGETS["steady"] else "missed"]
     else:
         cells += ["none", f"tail mean {mean:.0f}, not steady ({exp_mean:.0f})", "-", "not judged"]
-    cells += [f"{mean / ALPHA:.0f}", f"{peak:.0f} ({exp_peak:.0f}) at {load['peak_at_m']:.2f} m",
+    cells += [f"{run_record.raw_of(mean, ALPHA):.0f}", f"{peak:.0f} ({exp_peak:.0f}) at {load['peak_at_m']:.2f} m",
               f"{pct(peak, exp_peak):+.1f} %", "met" if abs(pct(peak, exp_peak)) <= TARGETS["peak"] else "missed"]
     slope = load.get("phase1_slope_N_per_m")
     if steady and slope is not None:
-        per_metre = rescale * slope / width
+        per_metre = run_record.at_alpha(slope, run_alpha, ALPHA) / width
         cells += [f"{per_metre:.0f} ({PHASE1_SLOPE_PER_METRE:.0f})", f"{pct(per_metre, PHASE1_SLOPE_PER_METRE):+.1f} %"]
     else:
         cells += ["-", "not judged"]
@@ -86,7 +86,8 @@ def span_mean(path, span):
     mean = run_record.mean_over(run_record.read_load_bins(path), -math.inf, span + 1e-9)
     if mean is None:
         return float("nan")
-    return ALPHA / summary["calibration_factor"] * mean / summary["structure_width_m"]
+    run_alpha, width = summary[run_record.CALIBRATION_FACTOR], summary[run_record.STRUCTURE_WIDTH]
+    return run_record.at_alpha(mean, run_alpha, ALPHA) / width
 
 
 def checks(root, series, runs):
@@ -97,7 +98,7 @@ def checks(root, series, runs):
     fulls = [p for label, p in runs if label.startswith("full")]
     lengths = {}
     for p in strips + fulls:
-        lengths[p] = run_record.require_summary(p)["pushed_length_m"]
+        lengths[p] = run_record.require_summary(p)[run_record.PUSHED_LENGTH]
     if len(strips) >= 2:
         span = min(lengths[p] for p in strips)
         means = [span_mean(p, span) for p in strips]
@@ -155,20 +156,20 @@ def targets(root):
         return []
 
     def per_metre(s, value):
-        return ALPHA / s["calibration_factor"] * value / s["structure_width_m"]
+        return run_record.at_alpha(value, s[run_record.CALIBRATION_FACTOR], ALPHA) / s[run_record.STRUCTURE_WIDTH]
 
     def experiment(s, key):
-        e = s.get("experiment") or {}
-        return e.get(key, float("nan")) / e.get("width_scale", s["structure_width_m"] / 10.0) / 10.0
+        e = s.get(run_record.EXPERIMENT) or {}
+        return e.get(key, float("nan")) / e.get("width_scale", s[run_record.STRUCTURE_WIDTH] / 10.0) / 10.0
 
     def name(key):
         return f"{key[0]} {key[1]}"
 
-    windows = {k: s for k, s in summaries.items() if s["load"].get("steady_found")}
-    early = [k for k, s in windows.items() if s["load"]["steady_window_m"][0] < WINDOW_BY]
+    windows = {k: s for k, s in summaries.items() if s[run_record.LOAD].get("steady_found")}
+    early = [k for k, s in windows.items() if s[run_record.LOAD]["steady_window_m"][0] < WINDOW_BY]
     lines = ["Issue #31's targets over these runs (a target that needs a steady window is judged only where the rule found one):", ""]
     def start(k):
-        return windows[k]["load"]["steady_window_m"][0]
+        return windows[k][run_record.LOAD]["steady_window_m"][0]
 
     lines.append(f"- A steady window starting before L = {WINDOW_BY:g} m in every series: found in {len(early)} of "
                  f"{len(summaries)} runs ({len({k[0] for k in summaries})} series)"
@@ -176,26 +177,28 @@ def targets(root):
                                                                            "grown: not the experiment's phase 2)"
                                                                            if start(k) < EARLY else "")
                                      for k in early) if early else "") + ".")
-    means = [(k, pct(per_metre(s, s["load"]["steady_mean_N"]), experiment(s, "steady_mean_N"))) for k, s in windows.items()]
+    means = [(k, pct(per_metre(s, s[run_record.LOAD]["steady_mean_N"]), experiment(s, "steady_mean_N")))
+             for k, s in windows.items()]
     lines.append("- Steady mean within +-10 %: "
                  + ("; ".join(f"{name(k)} {e:+.1f} % ({'met' if abs(e) <= TARGETS['steady'] else 'missed'})" for k, e in means)
                     if means else "not judged (no window)") + ".")
-    peaks = [(k, pct(per_metre(s, s["load"]["peak_N"]), experiment(s, "peak_N"))) for k, s in summaries.items()]
+    peaks = [(k, pct(per_metre(s, s[run_record.LOAD]["peak_N"]), experiment(s, "peak_N")))
+             for k, s in summaries.items()]
     met = [k for k, e in peaks if abs(e) <= TARGETS["peak"]]
     lines.append(f"- Peak within +-25 %: met in {len(met)} of {len(peaks)} runs"
                  + (f" ({', '.join(name(k) for k in met)})" if met else "")
                  + "; most runs have not reached the experiment's length, and a peak can still come.")
-    slopes = [(k, pct(per_metre(s, s["load"]["phase1_slope_N_per_m"]), PHASE1_SLOPE_PER_METRE)) for k, s in windows.items()
-              if s["load"].get("phase1_slope_N_per_m") is not None]
+    slopes = [(k, pct(per_metre(s, s[run_record.LOAD]["phase1_slope_N_per_m"]), PHASE1_SLOPE_PER_METRE))
+              for k, s in windows.items() if s[run_record.LOAD].get("phase1_slope_N_per_m") is not None]
     lines.append("- Phase-1 slope within +-25 % of 1500 N/m: "
                  + ("; ".join(f"{name(k)} {e:+.1f} %" for k, e in slopes) if slopes else "not judged (no window)") + ".")
-    weak = [per_metre(s, s["load"]["steady_mean_N"]) for k, s in windows.items() if k[0].startswith("W")]
-    medium = [per_metre(s, s["load"]["steady_mean_N"]) for k, s in windows.items() if k[0].startswith("M")]
+    weak = [per_metre(s, s[run_record.LOAD]["steady_mean_N"]) for k, s in windows.items() if k[0].startswith("W")]
+    medium = [per_metre(s, s[run_record.LOAD]["steady_mean_N"]) for k, s in windows.items() if k[0].startswith("M")]
     lines.append("- Weak above medium in steady state: " +
                  (f"{sum(weak) / len(weak):.0f} against {sum(medium) / len(medium):.0f} N/m "
                   f"({'met' if sum(weak) / len(weak) > sum(medium) / len(medium) else 'missed'})"
                   if weak and medium else "not judged (no weak and medium run both with a window)") + ".")
-    strong = max((s["pushed_length_m"] for k, s in summaries.items() if k[0] == "S-1"), default=None)
+    strong = max((s[run_record.PUSHED_LENGTH] for k, s in summaries.items() if k[0] == "S-1"), default=None)
     lines.append(f"- S-1's rubble profile at L = {PROFILE_AT:g} m beside the paper's Fig. 15: "
                  + (f"not yet (the longest S-1 run has reached {strong:.2f} m)" if strong is None or strong < PROFILE_AT
                     else "see the run's profiles.csv") + ".")

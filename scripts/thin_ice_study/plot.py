@@ -44,15 +44,17 @@ def read_run(run_dir):
             bins = run_record.read_load_bins(run_dir)
         except ValueError as e:
             sys.exit(f"{PROG}: {e}")
-        return bins["pushed_length_m"], bins["horizontal_calibrated_mean_N"], summary, f"means of {1000 * run_record.LOAD_BIN_LENGTH:.0f} mm bins"
+        return (bins[run_record.PUSHED_LENGTH], bins[run_record.CALIBRATED_MEAN], summary,
+                f"means of {1000 * run_record.LOAD_BIN_LENGTH:.0f} mm bins")
     if path is None:
         sys.exit(f"{PROG}: {run_dir}: no loads.csv nor load_bins.csv (is it the --out directory of a `thin_ice run`?)")
     try:
-        path, columns = run_record.read_load_columns(run_dir, ("pushed_length_m", "horizontal_calibrated_N"))
+        path, columns = run_record.read_load_columns(run_dir,
+                                                     (run_record.PUSHED_LENGTH, run_record.HORIZONTAL_CALIBRATED))
     except ValueError as e:
         sys.exit(f"{PROG}: {e}")
     note = "partial" if path.endswith(".partial") else ""
-    lengths, loads = columns["pushed_length_m"], columns["horizontal_calibrated_N"]
+    lengths, loads = columns[run_record.PUSHED_LENGTH], columns[run_record.HORIZONTAL_CALIBRATED]
     if summary is None:
         note = ", ".join(n for n in (note, "no summary.json") if n)
     return lengths, loads, summary, note
@@ -64,14 +66,14 @@ def finite(*values):
 
 def resumptions(summary):
     """The pushed lengths [m] at which the run was resumed from its checkpoint."""
-    return [v for v in (summary or {}).get("resumed_at_m") or [] if finite(v)]
+    return [v for v in (summary or {}).get(run_record.RESUMED_AT) or [] if finite(v)]
 
 
 def draw(ax, run_dir, lengths, loads, summary, note):
     ax.plot(lengths, loads, color=BLUE, linewidth=1.0, label="TIM simulation $F_{cal}$")
     summary = summary or {}
-    load = summary.get("load") or {}
-    experiment = summary.get("experiment")
+    load = summary.get(run_record.LOAD) or {}
+    experiment = summary.get(run_record.EXPERIMENT)
     if experiment:
         series = experiment.get("series", "")
         scale = experiment.get("width_scale", 1.0)
@@ -105,22 +107,22 @@ def draw(ax, run_dir, lengths, loads, summary, note):
                    label=("resumed from its checkpoint at L = " + ", ".join(f"{v:g}" for v in resumed) + " m")
                    if k == 0 else None)
 
-    scenario = (summary.get("scenario") or {}).get("name") or os.path.basename(
+    scenario = (summary.get(run_record.SCENARIO) or {}).get("name") or os.path.basename(
         os.path.normpath(run_dir))
     # The overrides that change the model (not the thread count), so that variants of one series
     # (seeds, readings, resolution) can be told apart.
-    overrides = (summary.get("scenario") or {}).get("overrides", [])
+    overrides = (summary.get(run_record.SCENARIO) or {}).get("overrides", [])
     # Overrides given when the run was resumed come last, in order, and hold from that length on.
-    switched = [s.get("from_m") if isinstance(s, dict) else None for s in summary.get("overrides_from_m") or []]
+    switched = [s.get("from_m") if isinstance(s, dict) else None for s in summary.get(run_record.OVERRIDES_FROM) or []]
     first_switched = len(overrides) - len(switched)
     changes = [o + (f" (from L = {switched[k - first_switched]:g} m)"
                     if k >= first_switched and finite(switched[k - first_switched]) else "")
                for k, o in enumerate(overrides) if not o.replace(" ", "").startswith("numerics.threads=")]
     if changes:
         scenario += " with " + ", ".join(changes)
-    title = f"{scenario}, backend {summary.get('backend', '?')}"
-    if summary.get("status") not in (None, "completed"):
-        note = ", ".join(n for n in (note, f"run {summary['status']}") if n)
+    title = f"{scenario}, backend {summary.get(run_record.BACKEND, '?')}"
+    if summary.get(run_record.STATUS) not in (None, "completed"):
+        note = ", ".join(n for n in (note, f"run {summary[run_record.STATUS]}") if n)
     if note:
         title += f" ({note})"
     ax.set_title("\n".join(textwrap.wrap(title, 110)))  # a long list of overrides wraps, not widens

@@ -41,12 +41,12 @@ def snapshot_entry(run, name=None):
              "wrote (docs/validation/ copies keep no snapshots: give the run's own folder)")
     rows = run_record.read_snapshot_index(run)
     if name is not None:
-        rows = [row for row in rows if row["file"] == name]
+        rows = [row for row in rows if row[run_record.FILE] == name]
         if not rows:
             sys.exit(f"{PROG}: --snapshot {name} is not listed in {run}/snapshots/index.csv")
     if not rows:
         sys.exit(f"{PROG}: {run}/snapshots/index.csv lists no snapshot")
-    return rows[-1]["file"], float(rows[-1]["pushed_length_m"])
+    return rows[-1][run_record.FILE], float(rows[-1][run_record.PUSHED_LENGTH])
 
 
 def main(argv):
@@ -67,20 +67,24 @@ def main(argv):
              "folder of `thin_ice run`")
     except ValueError as e:
         fail(f"{summary_path} is not JSON ({e})")
-    if "structure" not in summary or "false_bottom" not in summary:
+    if run_record.STRUCTURE not in summary or run_record.FALSE_BOTTOM not in summary:
         sys.exit(f"{PROG}: {a.run}/summary.json has no structure or false_bottom geometry "
                  "(older `thin_ice run` records lack it); run the scenario again")
     # A run without the false bottom has "false_bottom": null: the side view then draws none.
-    structure, bottom = summary["structure"], summary["false_bottom"]
+    structure, bottom = summary[run_record.STRUCTURE], summary[run_record.FALSE_BOTTOM]
     toe, angle = structure["toe_x_m"], math.radians(structure["angle_deg"])
     name, length = snapshot_entry(a.run, a.snapshot)
     rows = run_record.read_snapshot_cells(a.run, name)
     size = sheet_size(rows)
     pieces = size is not None
+
     # (x, y, z, kind): kind 0 the sheet (or any bonded cell without piece sizes), 1 a floe, 2 a free block
-    cells = [(float(r["x_m"]), float(r["y_m"]), float(r["z_m"]),
-              2 if r["in_intact_sheet"] != "1" else (1 if pieces and int(r["piece_cells"]) < size else 0))
-             for r in rows]
+    def kind(r):
+        if r[run_record.IN_INTACT_SHEET] != "1":
+            return 2
+        return 1 if pieces and int(r[run_record.PIECE_CELLS]) < size else 0
+
+    cells = [(float(r[run_record.X]), float(r[run_record.Y]), float(r[run_record.Z]), kind(r)) for r in rows]
     near = [c for c in cells if c[0] > toe - a.reach]
     fig, (side, top) = plt.subplots(2, 1, figsize=(11, 7.5), sharex=True)
     kinds = ((0, "tab:blue", "the sheet (largest bonded piece)" if pieces else "bonded to a neighbour (sheet or floe)"),
@@ -109,7 +113,7 @@ def main(argv):
     top.set_xlabel("x - toe [m]")
     top.set_ylabel("y [m]")
     top.set_xlim(-a.reach, max(0.5, structure["height_m"] / math.tan(angle) + 0.1))
-    scenario = summary["scenario"]["name"]
+    scenario = summary[run_record.SCENARIO]["name"]
     side.set_title(f"{os.path.basename(os.path.normpath(a.run))} ({scenario}): cells at L = {length:.3f} m, "
                    f"from the side (above) and from above (below)", fontsize=10)
     fig.tight_layout()

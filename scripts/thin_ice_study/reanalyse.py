@@ -25,10 +25,10 @@ SUMMARY = "works a finished run's load statistics out again (thin_ice analyse) a
 def reanalyse(tool, run_dir, reason):
     """Returns a line saying what changed; raises RuntimeError, leaving the run as it was."""
     fresh = analyse(tool, run_dir)
-    load, experiment = fresh["load"], fresh["experiment"]
+    load, experiment = fresh[run_record.LOAD], fresh[run_record.EXPERIMENT]
     summary = run_record.require_summary(run_dir)
-    old = summary.get("load") or {}
-    summary["load"], summary["experiment"] = load, experiment
+    old = summary.get(run_record.LOAD) or {}
+    summary[run_record.LOAD], summary[run_record.EXPERIMENT] = load, experiment
     summary.setdefault("reanalyses", []).append({"date": datetime.date.today().isoformat(), "why": reason})
     replace_files({run_record.summary_path(run_dir): summary_text(summary)})
     changed = [k for k in load if old.get(k) != load[k]]

@@ -86,23 +86,27 @@ def rescaled_loads(path, alpha):
     found = {}
 
     def calibrated_column(header):
-        if "horizontal_raw_N" not in header or "horizontal_calibrated_N" not in header:
-            raise RunError(f"{path}: no horizontal_raw_N and horizontal_calibrated_N columns")
-        found["raw"] = header.index("horizontal_raw_N")
-        return [header.index("horizontal_calibrated_N")]
-    return rewritten(path, calibrated_column, lambda row, _: float(row[found["raw"]]) * alpha)
+        if run_record.HORIZONTAL_RAW not in header or run_record.HORIZONTAL_CALIBRATED not in header:
+            raise RunError(f"{path}: no {run_record.HORIZONTAL_RAW} and {run_record.HORIZONTAL_CALIBRATED} columns")
+        found["raw"] = header.index(run_record.HORIZONTAL_RAW)
+        return [header.index(run_record.HORIZONTAL_CALIBRATED)]
+    return rewritten(path, calibrated_column, lambda row, _: run_record.calibrated(float(row[found["raw"]]), alpha))
 
 
-def rescaled_bins(path, ratio):
-    """load_bins.csv's text with its three calibrated columns (mean, least, greatest F_cal) times
-    `ratio` (new alpha / old alpha)."""
+# load_bins.csv's columns of alpha F: its mean, least and greatest per bin.
+CALIBRATED_BIN_COLUMNS = (run_record.CALIBRATED_MEAN, run_record.CALIBRATED_LEAST, run_record.CALIBRATED_GREATEST)
+
+
+def rescaled_bins(path, alpha_run, alpha_new):
+    """load_bins.csv's text with its three calibrated columns (mean, least, greatest F_cal) brought
+    from the run's alpha_run to alpha_new [-] (times alpha_new / alpha_run)."""
     def calibrated_columns(header):
-        columns = [k for k, name in enumerate(header) if name.startswith("horizontal_calibrated_")]
+        columns = [k for k, name in enumerate(header) if name in CALIBRATED_BIN_COLUMNS]
         if len(columns) != 3:
             raise RunError(f"{path}: not the header of a load_bins.csv of `thin_ice run` ({len(columns)} calibrated "
                            "columns)")
         return columns
-    return rewritten(path, calibrated_columns, lambda row, k: float(row[k]) * ratio)
+    return rewritten(path, calibrated_columns, lambda row, k: run_record.at_alpha(float(row[k]), alpha_run, alpha_new))
 
 
 def recalibrate(run_dir, tool, alpha_new=None):
@@ -118,7 +122,7 @@ def recalibrate(run_dir, tool, alpha_new=None):
         summary = run_record.require_summary(run_dir)
     except (OSError, ValueError) as e:
         raise RunError(f"{summary_path}: {e}")
-    alpha_run = check_alpha(summary.get("calibration_factor"), summary_path)
+    alpha_run = check_alpha(summary.get(run_record.CALIBRATION_FACTOR), summary_path)
     if alpha_new is None:
         value, where = alpha_of_scenario(tool, run_dir, "give --alpha")
         alpha_new = check_alpha(value, where)
@@ -134,8 +138,8 @@ def recalibrate(run_dir, tool, alpha_new=None):
         return f"already at alpha = {alpha_run:g}, left alone"
     # loads.csv where this directory has it (a clone keeps only the bins): F_cal = alpha F per row.
     loads_text = rescaled_loads(loads_path, alpha_new) if os.path.exists(loads_path) else None
-    bins_text = rescaled_bins(bins_path, alpha_new / alpha_run)
-    summary["calibration_factor"] = alpha_new
+    bins_text = rescaled_bins(bins_path, alpha_run, alpha_new)
+    summary[run_record.CALIBRATION_FACTOR] = alpha_new
     summary.setdefault("recalibrations", []).append(
         {"from_alpha": alpha_run, "to_alpha": alpha_new, "by": PROG,
          "date": datetime.date.today().isoformat()})
@@ -148,7 +152,8 @@ def recalibrate(run_dir, tool, alpha_new=None):
             f.write(summary_text(summary))
         try:
             fresh = analyse(tool, scratch)
-            summary["load"], summary["experiment"] = fresh["load"], fresh["experiment"]
+            for field in (run_record.LOAD, run_record.EXPERIMENT):
+                summary[field] = fresh[field]
         except RuntimeError as e:
             raise RunError(str(e).replace(scratch, run_dir))
     files = {bins_path: bins_text, summary_path: summary_text(summary)}

@@ -70,14 +70,21 @@ class Recorder:
         self.written = True
         os.makedirs(self.out_dir, exist_ok=True)
         alpha = self.alpha or 1.0
-        # loads.csv in the record's own columns (run_record.LOAD_COLUMNS, the mirror of run_record.hpp);
-        # what ROS does not carry (pusher force, intact bonds, contacts) is 0.
+        # loads.csv in the record's own columns (run_record.LOAD_COLUMNS, the mirror of run_record.hpp),
+        # each row keyed by column; what ROS does not carry (pusher force, intact bonds, contacts) is 0.
         lines = [",".join(run_record.LOAD_COLUMNS) + "\n"]
         for t, pushed, fx, fz, broken in self.rows:
-            lines.append("%.6f,%.6f,%.6f,%.6f,%.6f,0,0,%d,0\n" % (t, pushed, fx / alpha, fx, fz / alpha, broken))
+            row = {run_record.TIME: "%.6f" % t, run_record.PUSHED_LENGTH: "%.6f" % pushed,
+                   run_record.HORIZONTAL_RAW: "%.6f" % run_record.raw_of(fx, alpha),
+                   run_record.HORIZONTAL_CALIBRATED: "%.6f" % fx,
+                   run_record.VERTICAL_RAW: "%.6f" % run_record.raw_of(fz, alpha),
+                   run_record.PUSHER_FORCE: "0", run_record.INTACT_BONDS: "0", run_record.BROKEN_BONDS: "%d" % broken,
+                   run_record.CONTACTS: "0"}
+            lines.append(",".join(row[column] for column in run_record.LOAD_COLUMNS) + "\n")
         name = self.status.backend if self.status else "?"
-        summary = {"status": "completed", "scenario": {"name": "recorded from ROS"},
-                   "backend": name, "calibration_factor": alpha}
+        summary = {run_record.SCHEMA_VERSION: run_record.SUMMARY_SCHEMA_VERSION, run_record.STATUS: "completed",
+                   run_record.SCENARIO: {"name": "recorded from ROS"}, run_record.BACKEND: name,
+                   run_record.CALIBRATION_FACTOR: alpha}
         # Both files replaced together once both are written: an interrupted write leaves the old
         # pair (or none), never a truncated loads.csv.
         loads = os.path.join(self.out_dir, run_record.LOADS_FILE)

@@ -1,6 +1,7 @@
 """The run record as the scripts read it: the mirror of include/thin_ice_sim/study/run_record.hpp,
 which owns the layout (`thin_ice run` writes through it). test/test_run_record.py holds the two to
-each other, so a column renamed there and not here fails the tests."""
+each other, so a column renamed there and not here fails the tests. Also here, the one place the
+scripts apply or undo alpha of Eq. (18): calibrated, raw_of and at_alpha."""
 import csv
 import json
 import os
@@ -14,16 +15,89 @@ CHECKPOINT_FILE = "checkpoint.bin"
 SNAPSHOT_DIR = "snapshots"
 SNAPSHOT_INDEX_FILE = "index.csv"
 
+# The columns of the record's CSV files, each named as run_record.hpp names it (load_column::kTime:
+# TIME, snapshot_column::kInIntactSheet: IN_INTACT_SHEET; test/test_run_record.py holds each to the
+# constant of its name there); a name two files share (time_s, pushed_length_m, intact_bonds,
+# broken_bonds) is one constant here. The scripts index rows with these, not with the names.
+TIME = "time_s"                                # [s] simulated
+PUSHED_LENGTH = "pushed_length_m"              # [m]
+HORIZONTAL_RAW = "horizontal_raw_N"            # F of Eq. (17) [N]
+HORIZONTAL_CALIBRATED = "horizontal_calibrated_N"  # alpha F of Eq. (18) [N]
+VERTICAL_RAW = "vertical_raw_N"                # [N], +z
+PUSHER_FORCE = "pusher_force_N"                # [N], +x
+INTACT_BONDS = "intact_bonds"
+BROKEN_BONDS = "broken_bonds"
+CONTACTS = "contacts"
+BIN = "bin"                                    # k: the bin (k b, (k + 1) b] of pushed length
+DURATION = "duration_s"                        # [s] the bin's rows' intervals
+SAMPLES = "samples"                            # rows of loads.csv in the bin
+CALIBRATED_MEAN = "horizontal_calibrated_mean_N"        # [N]
+CALIBRATED_LEAST = "horizontal_calibrated_least_N"      # [N]
+CALIBRATED_GREATEST = "horizontal_calibrated_greatest_N"  # [N]
+VERTICAL_MEAN = "vertical_raw_mean_N"          # [N], +z
+PUSHER_MEAN = "pusher_force_mean_N"            # [N], +x
+CELL = "cell"
+X = "x_m"                                      # [m] the cell's centroid
+Y = "y_m"                                      # [m]
+Z = "z_m"                                      # [m]
+YAW = "yaw_rad"                                # [rad]
+IN_INTACT_SHEET = "in_intact_sheet"            # "1" while any of the cell's bonds holds
+PIECE_CELLS = "piece_cells"                    # cells of its bonded piece (older snapshots lack it)
+POLYGON = "polygon_xy_m"                       # "x0 y0 x1 y1 ..." [m], one field
+FILE = "file"                                  # index.csv: the snapshot's cells file
+
 # loads.csv: one row per output interval; these columns, then panel_1_N ... panel_P_N.
-LOAD_COLUMNS = ("time_s", "pushed_length_m", "horizontal_raw_N", "horizontal_calibrated_N", "vertical_raw_N",
-                "pusher_force_N", "intact_bonds", "broken_bonds", "contacts")
+LOAD_COLUMNS = (TIME, PUSHED_LENGTH, HORIZONTAL_RAW, HORIZONTAL_CALIBRATED, VERTICAL_RAW, PUSHER_FORCE, INTACT_BONDS,
+                BROKEN_BONDS, CONTACTS)
 # load_bins.csv: one row per bin of LOAD_BIN_LENGTH of pushed ice (include/thin_ice_sim/study/load_bins.hpp).
 LOAD_BIN_LENGTH = 0.035  # [m] the paper's output step; the C++ side's kLoadBinLength
-LOAD_BIN_COLUMNS = ("bin", "time_s", "pushed_length_m", "duration_s", "samples", "horizontal_calibrated_mean_N",
-                    "horizontal_calibrated_least_N", "horizontal_calibrated_greatest_N", "vertical_raw_mean_N",
-                    "pusher_force_mean_N", "intact_bonds", "broken_bonds")
-SNAPSHOT_COLUMNS = ("cell", "x_m", "y_m", "z_m", "yaw_rad", "in_intact_sheet", "piece_cells", "polygon_xy_m")
-SNAPSHOT_INDEX_COLUMNS = ("file", "time_s", "pushed_length_m")
+LOAD_BIN_COLUMNS = (BIN, TIME, PUSHED_LENGTH, DURATION, SAMPLES, CALIBRATED_MEAN, CALIBRATED_LEAST, CALIBRATED_GREATEST,
+                    VERTICAL_MEAN, PUSHER_MEAN, INTACT_BONDS, BROKEN_BONDS)
+SNAPSHOT_COLUMNS = (CELL, X, Y, Z, YAW, IN_INTACT_SHEET, PIECE_CELLS, POLYGON)
+SNAPSHOT_INDEX_COLUMNS = (FILE, TIME, PUSHED_LENGTH)
+
+# summary.json's top-level fields that the scripts read or write, as `thin_ice run` writes them
+# (run_record.hpp's SummaryRecord, through summaryJson; test/test_run_record.py finds each in a
+# summary it writes). The run's last pushed_length_m, intact_bonds and broken_bonds are the columns'
+# constants above; the objects' own fields ("load": steady_mean_N, peak_N ...) are named where they
+# are read.
+SCHEMA_VERSION = "schema_version"              # holds SUMMARY_SCHEMA_VERSION
+STATUS = "status"                              # "completed", "interrupted" or "unhealthy"
+SCENARIO = "scenario"                          # {"name", "file", "hash", "overrides"}
+BACKEND = "backend"
+TARGET = "target"                              # {"pushed_length_m" or "time_s": the run's target}
+LOADS_CSV_FROM = "loads_csv_from_s"            # [s] where loads.csv starts (> 0: resumed from the kept record)
+RESUMED_AT = "resumed_at_m"                    # [m] the pushed lengths at which it was resumed
+OVERRIDES_FROM = "overrides_from_m"            # [{"set", "from_m"}]: overrides given on resumption
+CALIBRATION_FACTOR = "calibration_factor"      # alpha [-] of Eq. (18) at which the run recorded alpha F
+LOAD = "load"                                  # the load statistics of alpha F (at CALIBRATION_FACTOR)
+STRUCTURE_WIDTH = "structure_width_m"          # [m]
+STRUCTURE = "structure"                        # {"toe_x_m", "angle_deg", "width_m", "height_m", "panels"}
+FALSE_BOTTOM = "false_bottom"                  # {"depth_m", "distance_from_structure_m"}, or null
+EXPERIMENT = "experiment"                      # Table 6 for the run's series, or null
+SUMMARY_FIELDS = (SCHEMA_VERSION, STATUS, SCENARIO, BACKEND, TARGET, LOADS_CSV_FROM, RESUMED_AT, OVERRIDES_FROM,
+                  PUSHED_LENGTH, INTACT_BONDS, BROKEN_BONDS, CALIBRATION_FACTOR, LOAD, STRUCTURE_WIDTH, STRUCTURE,
+                  FALSE_BOTTOM, EXPERIMENT)
+
+
+# alpha of Eq. (18), F_cal = alpha F: the record holds F (horizontal_raw_N) and alpha F at the run's
+# own alpha (summary.json's calibration_factor); these are the only places the scripts apply or undo it.
+def calibrated(raw, alpha):
+    """alpha F [N]: the raw load `raw` [N] (F of Eq. (17), or a quantity proportional to it: per
+    metre of width [N/m], per metre of pushed ice [N/m]) times the calibration factor alpha [-]."""
+    return alpha * raw
+
+
+def raw_of(value, run_alpha):
+    """The raw load F [N] (or per metre, as `value` is) under a calibrated load alpha F `value` [N]
+    recorded at run_alpha [-] (a run's calibration_factor): value / run_alpha."""
+    return value / run_alpha
+
+
+def at_alpha(value, run_alpha, alpha):
+    """A calibrated load `value` [N] (or per metre, as it is) recorded at the run's own run_alpha
+    [-] (its calibration_factor), brought to alpha [-]: alpha / run_alpha * value."""
+    return alpha / run_alpha * value
 
 
 def panel_column(panel):
@@ -57,7 +131,7 @@ def rows_are_whole_run(run_dir, summary):
     and load_bins.csv otherwise."""
     if summary is None:
         return loads_path(run_dir) is not None
-    return os.path.exists(os.path.join(run_dir, LOADS_FILE)) and not summary.get("loads_csv_from_s")
+    return os.path.exists(os.path.join(run_dir, LOADS_FILE)) and not summary.get(LOADS_CSV_FROM)
 
 
 def summary_path(run_dir):
@@ -130,7 +204,7 @@ def read_load_bins(run_dir):
     if not os.path.exists(path):
         raise FileNotFoundError(f"{run_dir}: no {LOAD_BINS_FILE} (a run made before it: `thin_ice analyse {run_dir} "
                                 f"--write-bins` writes it from its {LOADS_FILE})")
-    whole = ("bin", "samples", "intact_bonds", "broken_bonds")
+    whole = (BIN, SAMPLES, INTACT_BONDS, BROKEN_BONDS)
     columns = {name: [] for name in LOAD_BIN_COLUMNS}
     with open(path, newline="") as f:
         for number, row in enumerate(csv.DictReader(f), 2):
@@ -147,7 +221,7 @@ def mean_over(bins, begin, end):
     """Time-weighted mean calibrated horizontal load [N] of the bins whose end length lies in
     (begin, end] [m], or None where there is none."""
     weighted = duration = 0.0
-    for length, mean, d in zip(bins["pushed_length_m"], bins["horizontal_calibrated_mean_N"], bins["duration_s"]):
+    for length, mean, d in zip(bins[PUSHED_LENGTH], bins[CALIBRATED_MEAN], bins[DURATION]):
         if begin < length <= end:
             weighted += mean * d
             duration += d

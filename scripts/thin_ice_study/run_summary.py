@@ -7,7 +7,7 @@ import os
 import subprocess
 import sys
 
-from . import ROOT
+from . import ROOT, run_record
 
 BUILDS = (".ws/devel/lib/thin_ice_sim", ".ws/build_core_only/bin")  # catkin's, then plain CMake's
 
@@ -48,10 +48,10 @@ def scenario_of_run(summary):
     "section.key=value" sets scenario[section][key], to a float where the value reads as one.
     Raises OSError, KeyError, TypeError or yaml.YAMLError where the file or a section is missing."""
     from . import scenario_file  # here, not at the top: the module's other users do without yaml
-    path = summary["scenario"]["file"]
+    path = summary[run_record.SCENARIO]["file"]
     path = path if os.path.isabs(path) else os.path.join(ROOT, path)
     scenario = scenario_file.load(path)
-    for override in summary["scenario"].get("overrides", []):
+    for override in summary[run_record.SCENARIO].get("overrides", []):
         key, value = override.split("=", 1)
         section, name = key.split(".", 1)
         try:
@@ -67,7 +67,7 @@ def floating_level(summary):
     floats at rest (Archimedes; the model's cells do not tilt), from the run's scenario file and
     overrides. Raises ValueError naming the file and the keys when they are missing or unphysical."""
     import yaml
-    file = summary["scenario"]["file"]
+    file = summary[run_record.SCENARIO]["file"]
     try:
         scenario = scenario_of_run(summary)
         h, rho_i, rho_w = (float(scenario[s][k]) for s, k in (("ice", "thickness"), ("ice", "density"),
@@ -83,9 +83,9 @@ def floating_level(summary):
 def sheet_size(cells):
     """Cells in the pushed sheet, the largest piece held together by intact bonds, from a snapshot's
     rows (column piece_cells, which older snapshots lack); None for a snapshot without that column."""
-    if not cells or "piece_cells" not in cells[0]:
+    if not cells or run_record.PIECE_CELLS not in cells[0]:
         return None
-    return max(int(c["piece_cells"]) for c in cells)
+    return max(int(c[run_record.PIECE_CELLS]) for c in cells)
 
 
 def _json(value, indent):

@@ -68,8 +68,8 @@ def bond_law(tool, summary, slopes):
     """The answer (JSON) of `thin_ice probe bond-offset` (tool: the thin_ice program) for the run's
     scenario file and overrides, with sigma_v / sigma_f at each of `slopes`; run from the
     repository root, where the runs' relative scenario paths start."""
-    command = [os.path.abspath(tool), "probe", "bond-offset", "--scenario", summary["scenario"]["file"]]
-    for override in summary["scenario"].get("overrides", []):
+    command = [os.path.abspath(tool), "probe", "bond-offset", "--scenario", summary[run_record.SCENARIO]["file"]]
+    for override in summary[run_record.SCENARIO].get("overrides", []):
         command += ["--set", override]
     for slope in slopes:
         command += ["--slope", repr(float(slope))]
@@ -106,7 +106,8 @@ def profile_row(cells_csv, toe_x, reach, window, strip):
     size = sheet_size(cells)
     if size is None:
         return None
-    points = [(float(c["x_m"]) - toe_x, float(c["z_m"])) for c in cells if int(c["piece_cells"]) == size]
+    points = [(float(c[run_record.X]) - toe_x, float(c[run_record.Z]))
+              for c in cells if int(c[run_record.PIECE_CELLS]) == size]
     profile = strip_means([(x, z) for x, z in points if -reach <= x <= 0.0], strip)
     if len(profile) < 4:
         return None
@@ -153,13 +154,13 @@ def main(argv):
         fail(f"RUN_DIR {a.run} is not a run with snapshots (no {run_record.SUMMARY_FILE})")
     try:
         d = float(scenario_of_run(summary)["sheet"]["cell_size"])
-        toe_x = float(summary["structure"]["toe_x_m"])
+        toe_x = float(summary[run_record.STRUCTURE]["toe_x_m"])
     except (OSError, KeyError, TypeError, ValueError) as e:
         fail(f"cannot read the sheet and structure of {a.run} from its scenario and summary ({e})")
     rows = []
     for e in index[::a.every]:
-        rows.append((float(e["pushed_length_m"]),
-                     profile_row(run_record.snapshot_path(a.run, e["file"]), toe_x, a.reach, a.window, d)))
+        rows.append((float(e[run_record.PUSHED_LENGTH]),
+                     profile_row(run_record.snapshot_path(a.run, e[run_record.FILE]), toe_x, a.reach, a.window, d)))
     slopes = [row[1] for _, row in rows if row is not None and row[1] is not None]
     law = bond_law(tool, summary, slopes)  # one call: the sheet is generated once
     h, z_rest = law["thickness_m"], law["floating_centroid_z_m"]

@@ -38,11 +38,11 @@ def verdict_rows(tool, run, step, first):
     bins_path = os.path.join(run, run_record.LOAD_BINS_FILE)
     try:
         header, *samples = run_record.read_table(bins_path)
-        column = header.index("pushed_length_m")
+        column = header.index(run_record.PUSHED_LENGTH)
         lengths = [float(row[column]) for row in samples]
     except (OSError, ValueError) as e:
-        fail(f"{run} has no readable {run_record.LOAD_BINS_FILE} with a pushed_length_m column ({e}; a run made "
-             f"before it: `thin_ice analyse {run} --write-bins` writes it)")
+        fail(f"{run} has no readable {run_record.LOAD_BINS_FILE} with a {run_record.PUSHED_LENGTH} column ({e}; "
+             f"a run made before it: `thin_ice analyse {run} --write-bins` writes it)")
     if not lengths:
         fail(f"{bins_path} has no bins")
     end = lengths[-1]
@@ -63,7 +63,7 @@ def verdict_rows(tool, run, step, first):
                 answer = analyse(tool, tmp)
             except RuntimeError as e:
                 fail(f"thin_ice analyse refused {run} cut at {cut:g} m: {e}")
-            rows.append((cut, answer["load"], answer.get("experiment") or {}))
+            rows.append((cut, answer[run_record.LOAD], answer.get(run_record.EXPERIMENT) or {}))
     return rows
 
 

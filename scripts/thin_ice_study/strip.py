@@ -95,7 +95,7 @@ def resume_snapshots(run_dir, until, args):
             length = float(value)
     if not snapshots:
         return ""
-    reached = float(run_record.require_summary(run_dir)["pushed_length_m"])
+    reached = float(run_record.require_summary(run_dir)[run_record.PUSHED_LENGTH])
     target = length if until == "end" else float(until)  # "end": the pusher's travel, about --length
     segment = max(0.0, target - reached)
     return "--snapshots %d" % max(1, int(round(snapshots * segment / length)))

@@ -23,13 +23,16 @@ def read_run(path):
     summary = run_record.read_summary(path)
     if summary is not None and not run_record.rows_are_whole_run(path, summary):
         bins = run_record.read_load_bins(path)
-        alpha = summary["calibration_factor"]
-        last = {"broken_bonds": bins["broken_bonds"][-1], "intact_bonds": bins["intact_bonds"][-1]} if bins["bin"] else None
-        return Record(summary, bins["pushed_length_m"], [f / alpha for f in bins["horizontal_calibrated_mean_N"]],
-                      [f / alpha for f in bins["horizontal_calibrated_greatest_N"]], last, run_record.LOAD_BIN_LENGTH)
+        run_alpha = summary[run_record.CALIBRATION_FACTOR]
+        last = ({run_record.BROKEN_BONDS: bins[run_record.BROKEN_BONDS][-1],
+                 run_record.INTACT_BONDS: bins[run_record.INTACT_BONDS][-1]} if bins[run_record.BIN] else None)
+        return Record(summary, bins[run_record.PUSHED_LENGTH],
+                      [run_record.raw_of(f, run_alpha) for f in bins[run_record.CALIBRATED_MEAN]],
+                      [run_record.raw_of(f, run_alpha) for f in bins[run_record.CALIBRATED_GREATEST]], last,
+                      run_record.LOAD_BIN_LENGTH)
     rows = run_record.read_load_rows(path)
-    lengths = [float(row["pushed_length_m"]) for row in rows]
-    raw = [float(row["horizontal_raw_N"]) for row in rows]
+    lengths = [float(row[run_record.PUSHED_LENGTH]) for row in rows]
+    raw = [float(row[run_record.HORIZONTAL_RAW]) for row in rows]
     return Record(summary, lengths, raw, raw, rows[-1] if rows else None, 0.0)
 
 

@@ -37,10 +37,10 @@ def front_distances(path, toe_x):
     out = []
     for entry in run_record.read_snapshot_index(path):
         front = -math.inf
-        for cell in run_record.read_snapshot_cells(path, entry["file"]):
-            if cell["in_intact_sheet"] == "1":
-                front = max(front, float(cell["x_m"]))
-        out.append((float(entry["pushed_length_m"]), toe_x - front))
+        for cell in run_record.read_snapshot_cells(path, entry[run_record.FILE]):
+            if cell[run_record.IN_INTACT_SHEET] == "1":
+                front = max(front, float(cell[run_record.X]))
+        out.append((float(entry[run_record.PUSHED_LENGTH]), toe_x - front))
     return out
 
 
@@ -72,12 +72,13 @@ def main(argv):
             kept = [k for k, l in enumerate(lengths) if l <= args.upto]
             lengths, raw, greatest = [lengths[k] for k in kept], [raw[k] for k in kept], [greatest[k] for k in kept]
         name = os.path.basename(os.path.normpath(path))
-        width = summary["structure_width_m"] if summary else args.width
-        per_metre = [args.alpha * f / width for f in raw]
-        peak = args.alpha * max(greatest) / width if greatest else float("nan")
+        width = summary[run_record.STRUCTURE_WIDTH] if summary else args.width
+        per_metre = [run_record.calibrated(f, args.alpha) / width for f in raw]
+        peak = run_record.calibrated(max(greatest), args.alpha) / width if greatest else float("nan")
         means = window_means(lengths, per_metre, args.window)
         if args.markdown:
-            print("| %s | %.2f | %s | %.0f | %s |" % (name, lengths[-1] if lengths else 0.0, last["broken_bonds"], peak,
+            print("| %s | %.2f | %s | %.0f | %s |" % (name, lengths[-1] if lengths else 0.0,
+                                                    last[run_record.BROKEN_BONDS], peak,
                                                     " ".join("%.0f" % m for _, m in means)))
             continue
         if summary is None:
@@ -85,17 +86,17 @@ def main(argv):
             print("means per %.2f m [N/m]: %s" % (args.window, " ".join("%.0f" % m for _, m in means)))
             print()
             continue
-        series = (summary.get("experiment") or {}).get("series", "?")  # null for a scenario of no series
-        load = summary["load"]
-        overrides = [o for o in summary["scenario"]["overrides"]
+        series = (summary.get(run_record.EXPERIMENT) or {}).get("series", "?")  # null for a scenario of no series
+        load = summary[run_record.LOAD]
+        overrides = [o for o in summary[run_record.SCENARIO]["overrides"]
                      if not o.split("=")[0] in ("sheet.width", "structure.width", "channel.width",
                                                 "structure.panels", "sheet.length", "structure.toe_x",
                                                 "numerics.threads")]
-        print("## %s (%s%s)" % (name, summary["scenario"]["name"],
+        print("## %s (%s%s)" % (name, summary[run_record.SCENARIO]["name"],
                                 (", " + ", ".join(overrides)) if overrides else ""))
         print("L %.2f m, %s; broken bonds %d of %d; peak alpha F %.0f N/m at %.2f m"
-              % (lengths[-1] if lengths else 0.0, summary["status"], summary["broken_bonds"],
-                 summary["broken_bonds"] + summary["intact_bonds"], peak,
+              % (lengths[-1] if lengths else 0.0, summary[run_record.STATUS], summary[run_record.BROKEN_BONDS],
+                 summary[run_record.BROKEN_BONDS] + summary[run_record.INTACT_BONDS], peak,
                  lengths[per_metre.index(peak)] if per_metre else float("nan")))
         if series in EXPERIMENT_PER_METRE:
             mean_exp, peak_exp = EXPERIMENT_PER_METRE[series]
@@ -107,9 +108,9 @@ def main(argv):
         print("steady: %s%s" % ("yes, " if load["steady_found"] else "no; ", load["steady_rule"]))
         if load["steady_found"]:
             w = load["steady_window_m"]
-            print("steady window %.2f-%.2f m, mean alpha F %.0f N/m"
-                  % (w[0], w[1], args.alpha * load["steady_mean_N"] / summary["calibration_factor"] / width))
-        fronts = front_distances(path, summary["structure"]["toe_x_m"])
+            steady_mean = run_record.at_alpha(load["steady_mean_N"], summary[run_record.CALIBRATION_FACTOR], args.alpha)
+            print("steady window %.2f-%.2f m, mean alpha F %.0f N/m" % (w[0], w[1], steady_mean / width))
+        fronts = front_distances(path, summary[run_record.STRUCTURE]["toe_x_m"])
         print("sheet front from the toe [m] at L: %s"
               % " ".join("%.2f@%.1f" % (d, l) for l, d in fronts))
         print()

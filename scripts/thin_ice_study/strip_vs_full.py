@@ -12,6 +12,7 @@ import argparse
 import os
 import sys
 
+from . import run_record
 from .experiments import ALPHA
 from .strip_loads import read_run, window_means, within_seed_spread
 
@@ -25,9 +26,9 @@ def per_metre(run, alpha, span):
     summary, lengths, raw = record.summary, record.lengths, record.raw
     if summary is None:
         raise ValueError("%s has no summary.json (a run still going, or killed)" % run)
-    width = summary["structure_width_m"]
+    width = summary[run_record.STRUCTURE_WIDTH]
     kept = [k for k, length in enumerate(lengths) if length <= span + 1e-6]
-    lengths, loads = [lengths[k] for k in kept], [alpha * raw[k] / width for k in kept]
+    lengths, loads = [lengths[k] for k in kept], [run_record.calibrated(raw[k], alpha) / width for k in kept]
     # A record of bins reaches the span where its last whole bin before it ends.
     if not lengths or lengths[-1] < span - 1e-3 - record.resolution:
         raise ValueError("%s reaches L = %.3f m, short of the span %.3f m" % (run, lengths[-1] if lengths else 0.0, span))

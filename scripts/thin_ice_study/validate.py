@@ -215,7 +215,8 @@ def completed_to(run_dir, length):
     task gives it]; False where it says otherwise or has no summary (or one that cannot be read)."""
     try:
         s = run_record.require_summary(run_dir)
-        return s["status"] == "completed" and abs(s["target"].get("pushed_length_m", -1) - float(length)) < 1e-9
+        return (s[run_record.STATUS] == "completed"
+                and abs(s[run_record.TARGET].get("pushed_length_m", -1) - float(length)) < 1e-9)
     except (OSError, ValueError, KeyError, TypeError):
         return False
 
@@ -363,7 +364,7 @@ def completed_status(run_dir):
     """True where the run's summary.json says it completed; False where it says otherwise or has no
     summary (or one that cannot be read)."""
     try:
-        return run_record.require_summary(run_dir)["status"] == "completed"
+        return run_record.require_summary(run_dir)[run_record.STATUS] == "completed"
     except (OSError, ValueError, KeyError):
         return False
 

@@ -15,7 +15,6 @@ in the folder (nothing to report, the old report left as it was).
 import functools
 import argparse
 import os
-import sys
 
 from .experiments import ALPHA, PEAK, STEADY_MEAN, STRUCTURE_WIDTH
 from .phase2_plot import SMOOTHING, draw
@@ -52,7 +51,7 @@ def check_runs(root):
                 summary = run_record.require_summary(path)
             except ValueError as e:
                 fail(f"{summary_path} is not JSON ({e}); allowed: a summary.json of `thin_ice run`")
-            if not isinstance(summary, dict) or not isinstance(summary.get("load"), dict):
+            if not isinstance(summary, dict) or not isinstance(summary.get(run_record.LOAD), dict):
                 fail(f"{summary_path} has no \"load\" object; allowed: a summary.json of `thin_ice run`")
             if not os.path.exists(os.path.join(path, run_record.LOAD_BINS_FILE)):
                 fail(f"{path} has no load_bins.csv (a run made before it: `thin_ice analyse {path} --write-bins` "
@@ -114,6 +113,3 @@ def main(argv):
         f.write("\n".join(lines))
     os.replace(path + ".partial", path)
 
-
-if __name__ == "__main__":
-    main(sys.argv[1:])
