@@ -9,6 +9,7 @@ field of the summary.json `thin_ice run` writes; one that is neither fails.
     test_run_record.py THIN_ICE SOURCE_DIR   (THIN_ICE: the thin_ice program)
 """
 import csv
+import json
 import os
 import re
 import subprocess
@@ -137,6 +138,21 @@ def main():
             failures.append("require_summary: a run without summary.json was not refused")
         except FileNotFoundError as e:
             expect("require_summary names the file", e.filename, run_record.summary_path(run))
+        # A schema_version this mirror does not know is refused, as run_directory.cpp refuses it.
+        for version in (run_record.SUMMARY_SCHEMA_VERSION + 1, 0, "1"):
+            with open(run_record.summary_path(run), "w") as f:
+                json.dump({run_record.SCHEMA_VERSION: version}, f)
+            try:
+                run_record.require_summary(run)
+                failures.append(f"require_summary: schema_version {version!r} was not refused")
+            except ValueError as e:
+                if "schema_version" not in str(e) or "allowed: 1 to" not in str(e):
+                    failures.append(f"require_summary's refusal of {version!r} names no field and range: {e}")
+        with open(run_record.summary_path(run), "w") as f:
+            json.dump({run_record.SCHEMA_VERSION: run_record.SUMMARY_SCHEMA_VERSION}, f)
+        expect("require_summary of a known version", run_record.require_summary(run),
+               {run_record.SCHEMA_VERSION: run_record.SUMMARY_SCHEMA_VERSION})
+        os.remove(run_record.summary_path(run))
         os.remove(path)
         try:
             run_record.read_load_columns(run, ("pushed_length_m",))

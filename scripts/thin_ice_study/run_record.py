@@ -142,9 +142,17 @@ def summary_path(run_dir):
 def require_summary(run_dir):
     """summary.json as it was written (a dict in a record of `thin_ice run`), for a caller to whom
     the run must have one; raises FileNotFoundError naming the file where it has none (OSError
-    where it cannot be read) and ValueError where it is not JSON."""
-    with open(summary_path(run_dir)) as f:
-        return json.load(f)
+    where it cannot be read), and ValueError where it is not JSON or its schema_version is not one
+    this mirror knows (1 to SUMMARY_SCHEMA_VERSION; a record without the field is layout 1), as the
+    C++ reader refuses it."""
+    path = summary_path(run_dir)
+    with open(path) as f:
+        summary = json.load(f)
+    version = summary.get(SCHEMA_VERSION, 1) if isinstance(summary, dict) else 1
+    if isinstance(version, bool) or not isinstance(version, int) or not 1 <= version <= SUMMARY_SCHEMA_VERSION:
+        raise ValueError(f"{path}: \"{SCHEMA_VERSION}\" is {json.dumps(version)}; allowed: 1 to "
+                         f"{SUMMARY_SCHEMA_VERSION} (a record of a newer thin_ice is read by that thin_ice)")
+    return summary
 
 
 def read_summary(run_dir):
