@@ -262,7 +262,7 @@ def dem_section(run, out, lines):
                   f"**{lig_per_sim / base_per_sim:.1f} times faster per simulated second**; the {isa} build is "
                   f"{base_per_sim / tim_per_sim:.2f} times as fast as the baseline build in this window."]
     lines += [""]
-    lines += ["LIGGGHTS command: `" + s["command"] + "`", ""]
+    lines += ["LIGGGHTS command (its files named from the repository root): `" + s["command"] + "`", ""]
     fig, ax = plt.subplots(figsize=(6, 3.2))
     names, values, colours = ["LIGGGHTS 3-D DEM", f"thin_ice_sim CPU\n({isa})"], [lig_per_sim, tim_per_sim], ["tab:gray", "tab:blue"]
     if base is not None:
