@@ -50,7 +50,7 @@ def camel(name):
 COLUMN_NAMESPACES = ("load_column", "bin_column", "snapshot_column", "index_column")
 FILE_NAMES = {"kSummaryFile": "SUMMARY_FILE", "kLoadsFile": "LOADS_FILE", "kLoadBinsFile": "LOAD_BINS_FILE",
               "kCheckpointFile": "CHECKPOINT_FILE", "kSnapshotDir": "SNAPSHOT_DIR",
-              "kSnapshotIndexFile": "SNAPSHOT_INDEX_FILE"}
+              "kSnapshotIndexFile": "SNAPSHOT_INDEX_FILE", "kLoadsPartialFile": "LOADS_PARTIAL_FILE"}
 
 
 def named_constants(run_record, constants):
@@ -146,7 +146,7 @@ def main():
                 run_record.require_summary(run)
                 failures.append(f"require_summary: schema_version {version!r} was not refused")
             except ValueError as e:
-                if "schema_version" not in str(e) or "allowed: 1 to" not in str(e):
+                if "schema_version" not in str(e) or "allowed: a whole number from 1 to" not in str(e):
                     failures.append(f"require_summary's refusal of {version!r} names no field and range: {e}")
         with open(run_record.summary_path(run), "w") as f:
             json.dump({run_record.SCHEMA_VERSION: run_record.SUMMARY_SCHEMA_VERSION}, f)

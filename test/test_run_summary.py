@@ -48,7 +48,7 @@ def main():
             done = subprocess.run([thin_ice] + args, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                                   timeout=300)
             lines = done.stderr.strip().splitlines()
-            if done.returncode != 2 or len(lines) != 1 or '"schema_version" is 2; allowed: 1 to 1' not in lines[0]:
+            if done.returncode != 2 or len(lines) != 1 or '"schema_version" is 2; allowed: a whole number from 1 to 1 (a record of a newer' not in lines[0]:
                 failures.append(f"thin_ice {args[0]} of schema_version 2: exit status {done.returncode}, "
                                 f"stderr {done.stderr.strip()!r}")
         if failures:

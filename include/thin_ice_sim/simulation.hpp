@@ -76,8 +76,8 @@ class Simulation {
   int cellCount() const;
   const Params& params() const { return scenario_.params; }
   /// The scene as the laws use it, worked out once from the parameters (physics/cell_forces.hpp):
-  /// the structure's face and panels, the false bottom's start and depth, the walls. Markers and
-  /// checks read it here rather than work it out again.
+  /// the structure's face and panels, where the false bottom starts and its height (z, below the
+  /// waterline), the walls. Markers and checks read it here rather than work it out again.
   const ModelConstants& scene() const;
   const Scenario& scenario() const { return scenario_; }
   const IceSheet& sheet() const { return sheet_; }

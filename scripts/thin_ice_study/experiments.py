@@ -1,7 +1,8 @@
 """The experiments the simulator is validated against, read from config/experiments.yaml (the one
 place their figures are written; the C++ tools embed the same file when they are built), and the
 paper's calibration factor alpha of Eq. (18) with which Table 6 compares with them, read from the
-scenarios' base file (the one place it is written; every shipped scenario inherits it)."""
+scenarios' base file (where the seven series inherit it from; quick.yaml, a test scenario kept
+whole so that tests can copy it alone, states the same value)."""
 import os
 
 import yaml

@@ -190,7 +190,9 @@ def targets(root):
                  + "; most runs have not reached the experiment's length, and a peak can still come.")
     slopes = [(k, pct(per_metre(s, s[run_record.LOAD]["phase1_slope_N_per_m"]), PHASE1_SLOPE_PER_METRE))
               for k, s in windows.items() if s[run_record.LOAD].get("phase1_slope_N_per_m") is not None]
-    lines.append("- Phase-1 slope within +-25 % of 1500 N/m: "
+    lines.append(f"- Phase-1 slope within +-25 % of {PHASE1_SLOPE:g} N/m on the experiments' "
+                 f"{PHASE1_SLOPE / PHASE1_SLOPE_PER_METRE:g} m structure "
+                 f"({PHASE1_SLOPE_PER_METRE:g} N/m per metre of width): "
                  + ("; ".join(f"{name(k)} {e:+.1f} %" for k, e in slopes) if slopes else "not judged (no window)") + ".")
     weak = [per_metre(s, s[run_record.LOAD]["steady_mean_N"]) for k, s in windows.items() if k[0].startswith("W")]
     medium = [per_metre(s, s[run_record.LOAD]["steady_mean_N"]) for k, s in windows.items() if k[0].startswith("M")]

@@ -53,7 +53,7 @@ def read_run(run_dir):
                                                      (run_record.PUSHED_LENGTH, run_record.HORIZONTAL_CALIBRATED))
     except ValueError as e:
         sys.exit(f"{PROG}: {e}")
-    note = "partial" if path.endswith(".partial") else ""
+    note = "partial" if os.path.basename(path) == run_record.LOADS_PARTIAL_FILE else ""
     lengths, loads = columns[run_record.PUSHED_LENGTH], columns[run_record.HORIZONTAL_CALIBRATED]
     if summary is None:
         note = ", ".join(n for n in (note, "no summary.json") if n)

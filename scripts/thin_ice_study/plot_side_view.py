@@ -12,6 +12,7 @@ usage: scripts/study plot_side_view RUN_DIR OUT_PNG [--snapshot FILE] [--reach M
 """
 import functools
 import argparse
+import json
 import math
 import os
 import sys
@@ -65,8 +66,10 @@ def main(argv):
     except OSError as e:
         fail(f"RUN_DIR {a.run}: cannot read summary.json ({e.strerror}); allowed: a finished (or interrupted) "
              "folder of `thin_ice run`")
-    except ValueError as e:
+    except json.JSONDecodeError as e:
         fail(f"{summary_path} is not JSON ({e})")
+    except ValueError as e:  # a layout this mirror does not know: the reason names the file
+        fail(str(e))
     if run_record.STRUCTURE not in summary or run_record.FALSE_BOTTOM not in summary:
         sys.exit(f"{PROG}: {a.run}/summary.json has no structure or false_bottom geometry "
                  "(older `thin_ice run` records lack it); run the scenario again")

@@ -23,6 +23,7 @@ cannot be brought over; the others are still done.
 import argparse
 import datetime
 import io
+import json
 import math
 import os
 import sys
@@ -113,15 +114,17 @@ def recalibrate(run_dir, tool, alpha_new=None):
     """Returns a line saying what was done; raises RunError, leaving the run as it was."""
     summary_path, loads_path = run_record.summary_path(run_dir), os.path.join(run_dir, run_record.LOADS_FILE)
     bins_path = os.path.join(run_dir, run_record.LOAD_BINS_FILE)
-    if os.path.exists(loads_path + ".partial"):
+    if os.path.exists(os.path.join(run_dir, run_record.LOADS_PARTIAL_FILE)):
         raise RunError("a run is still writing here (loads.csv.partial)")
     if not (os.path.exists(summary_path) and os.path.exists(bins_path)):
         raise RunError("no summary.json and load_bins.csv: not a finished run directory of `thin_ice run` (a run made "
                        "before load_bins.csv: `thin_ice analyse RUN_DIR --write-bins` writes it)")
     try:
         summary = run_record.require_summary(run_dir)
-    except (OSError, ValueError) as e:
+    except (OSError, json.JSONDecodeError) as e:
         raise RunError(f"{summary_path}: {e}")
+    except ValueError as e:  # a layout this mirror does not know: the reason names the file
+        raise RunError(str(e))
     alpha_run = check_alpha(summary.get(run_record.CALIBRATION_FACTOR), summary_path)
     if alpha_new is None:
         value, where = alpha_of_scenario(tool, run_dir, "give --alpha")

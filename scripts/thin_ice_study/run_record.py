@@ -9,7 +9,8 @@ import os
 SUMMARY_SCHEMA_VERSION = 1  # summary.json's "schema_version"; records before the field: the same layout
 
 SUMMARY_FILE = "summary.json"
-LOADS_FILE = "loads.csv"  # written through loads.csv.partial, renamed when the run ends
+LOADS_FILE = "loads.csv"  # written through LOADS_PARTIAL_FILE, renamed when the run ends
+LOADS_PARTIAL_FILE = "loads.csv.partial"  # loads.csv while its segment runs
 LOAD_BINS_FILE = "load_bins.csv"  # the kept record: the whole run in bins of pushed length
 CHECKPOINT_FILE = "checkpoint.bin"
 SNAPSHOT_DIR = "snapshots"
@@ -109,10 +110,10 @@ def loads_path(run_dir):
     """loads.csv of a run, or, where there is none, loads.csv.partial (a first segment killed before
     it finished: its rows are written one by one); None when there is neither. A resumed segment
     killed with SIGKILL leaves both: loads.csv, the record up to its resumption, is the one read."""
-    path = os.path.join(run_dir, LOADS_FILE)
+    path, partial = os.path.join(run_dir, LOADS_FILE), os.path.join(run_dir, LOADS_PARTIAL_FILE)
     if os.path.exists(path):
         return path
-    return path + ".partial" if os.path.exists(path + ".partial") else None
+    return partial if os.path.exists(partial) else None
 
 
 def existing_loads_path(run_dir):
@@ -150,8 +151,10 @@ def require_summary(run_dir):
         summary = json.load(f)
     version = summary.get(SCHEMA_VERSION, 1) if isinstance(summary, dict) else 1
     if isinstance(version, bool) or not isinstance(version, int) or not 1 <= version <= SUMMARY_SCHEMA_VERSION:
-        raise ValueError(f"{path}: \"{SCHEMA_VERSION}\" is {json.dumps(version)}; allowed: 1 to "
-                         f"{SUMMARY_SCHEMA_VERSION} (a record of a newer thin_ice is read by that thin_ice)")
+        newer = isinstance(version, int) and not isinstance(version, bool) and version > SUMMARY_SCHEMA_VERSION
+        raise ValueError(f"{path}: \"{SCHEMA_VERSION}\" is {json.dumps(version)}; allowed: a whole number from 1 to "
+                         f"{SUMMARY_SCHEMA_VERSION}" + (" (a record of a newer thin_ice is read by that thin_ice)"
+                                                         if newer else ""))
     return summary
 
 

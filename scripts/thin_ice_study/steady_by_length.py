@@ -81,7 +81,7 @@ def main(argv):
         fail(f"--from {first:g}; allowed: a length > 0 m")
     if not os.path.isfile(run_record.summary_path(a.run)):
         fail(f"{a.run} is not a finished run directory of `thin_ice run` (no summary.json)")
-    if os.path.exists(os.path.join(a.run, run_record.LOADS_FILE + ".partial")):
+    if os.path.exists(os.path.join(a.run, run_record.LOADS_PARTIAL_FILE)):
         fail(f"{a.run} is still being written (loads.csv.partial): its summary.json and loads.csv are of an "
              "earlier stop; allowed: a run that has stopped")
     tool = a.tool or default_tool(PROG)

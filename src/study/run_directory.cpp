@@ -34,20 +34,26 @@ YAML::Node loadSummary(const std::string& run_dir) {
   } catch (const YAML::Exception& e) {
     throw std::runtime_error(path + ": " + e.what());
   }
+  if (!summary.IsMap()) {
+    throw std::runtime_error(path + ": not a JSON object; allowed: the summary.json of `thin_ice run`");
+  }
   // A record without the field has layout 1 (run_record.hpp); a later layout may mean a field this
   // reader knows by name something else, so it is refused rather than misread.
-  const YAML::Node version = summary.IsMap() ? summary["schema_version"] : YAML::Node();
+  const YAML::Node version = summary["schema_version"];
   if (version) {
     int v = 0;
     try {
-      v = version.as<int>();
+      // A quoted scalar ("1") is text, not the number the writer writes.
+      v = version.Tag() == "!" ? 0 : version.as<int>();
     } catch (const YAML::Exception&) {
-      v = -1;
+      v = 0;
     }
     if (v < 1 || v > run_record::kSummarySchemaVersion) {
-      throw std::runtime_error(path + ": \"schema_version\" is " + YAML::Dump(version) + "; allowed: 1 to " +
+      const std::string shown = version.Tag() == "!" ? "\"" + version.Scalar() + "\"" : YAML::Dump(version);
+      const bool newer = v > run_record::kSummarySchemaVersion;
+      throw std::runtime_error(path + ": \"schema_version\" is " + shown + "; allowed: a whole number from 1 to " +
                                std::to_string(run_record::kSummarySchemaVersion) +
-                               " (a record of a newer thin_ice is read by that thin_ice)");
+                               (newer ? " (a record of a newer thin_ice is read by that thin_ice)" : ""));
     }
   }
   return summary;

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <sstream>
+#include <stdexcept>
 
 #include "thin_ice_sim/study/run_report.hpp"
 
@@ -44,6 +45,10 @@ std::string loadBinsText(const std::vector<LoadBin>& bins) {
 }
 
 std::string snapshotText(const std::vector<CellSnapshot>& cells, const std::vector<std::vector<Vec2>>& polygons) {
+  if (polygons.size() != cells.size()) {
+    throw std::invalid_argument("snapshotText: " + std::to_string(cells.size()) + " cells and " +
+                                std::to_string(polygons.size()) + " polygons");
+  }
   std::ostringstream text;
   text.precision(9);
   text << headerLine(kSnapshotColumns);

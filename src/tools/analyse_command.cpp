@@ -40,7 +40,8 @@ int thin_ice::cli::analyseCommand(int argc, char** argv) {
   const std::string dir = args[0];
   try {
     if (std::filesystem::exists(dir + "/" + thin_ice::run_record::kLoadsPartialFile)) {
-      throw std::runtime_error(std::string("a run is still writing here (") + thin_ice::run_record::kLoadsPartialFile + ")");
+      throw std::runtime_error(std::string("a run is still writing here (") + thin_ice::run_record::kLoadsPartialFile +
+                               ")");
     }
     const thin_ice::RunSummary summary = thin_ice::readRunSummary(dir);
     if (summary.scenario_name.empty() || !(summary.structure_width > 0.0)) {

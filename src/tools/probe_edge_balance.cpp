@@ -55,8 +55,9 @@ int thin_ice::cli::probeEdgeBalance(int argc, char** argv) {
     // row 1, and a short row at an earlier target shifts the numbering against t / interval.
     const std::string loads_path = run + "/" + thin_ice::run_record::kLoadsFile;
     const auto loads = thin_ice::readCsv(loads_path);
+    namespace column = thin_ice::run_record::load_column;
     std::vector<double> row_time;
-    for (const auto& r : loads) row_time.push_back(thin_ice::csvNumber(r, thin_ice::run_record::load_column::kTime, loads_path));
+    for (const auto& r : loads) row_time.push_back(thin_ice::csvNumber(r, column::kTime, loads_path));
     table += "| L [m] | structure's vertical load [N] | bonds across the cut [N] | buoyancy lost by the front row [N] "
              "| sum [N] | front row lift [mm] | row behind lift [mm] | broken bonds |\n";
     table += "|---:|---:|---:|---:|---:|---:|---:|---:|\n";
@@ -76,12 +77,12 @@ int thin_ice::cli::probeEdgeBalance(int argc, char** argv) {
       for (const thin_ice::CellSnapshot& c : thin_ice::readCellSnapshot(entry.file)) poses.push_back({c.x, c.y, c.z, c.yaw});
       const thin_ice::FrontRowBalance b = thin_ice::frontRowBalance(model, row, poses);
       // The structure pushes the ice down: minus its vertical load on the structure.
-      const double structure_down = -thin_ice::csvNumber(load, thin_ice::run_record::load_column::kVerticalRaw, loads_path);
+      const double structure_down = -thin_ice::csvNumber(load, column::kVerticalRaw, loads_path);
       std::snprintf(line, sizeof(line), "| %.4f | %.0f | %.0f | %.0f | %.0f | %.1f | %.1f | %.0f |\n",
-                    thin_ice::csvNumber(load, thin_ice::run_record::load_column::kPushedLength, loads_path), shown(structure_down, 0),
+                    thin_ice::csvNumber(load, column::kPushedLength, loads_path), shown(structure_down, 0),
                     shown(b.bond_force, 0), shown(b.lost_buoyancy, 0), shown(b.bond_force + b.lost_buoyancy, 0),
                     shown(1e3 * b.front_lift, 1), shown(1e3 * b.rear_lift, 1),
-                    thin_ice::csvNumber(load, thin_ice::run_record::load_column::kBrokenBonds, loads_path));
+                    thin_ice::csvNumber(load, column::kBrokenBonds, loads_path));
       table += line;
     }
     std::fputs(table.c_str(), stdout);

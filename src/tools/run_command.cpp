@@ -246,9 +246,10 @@ void writeProfiles(const Simulation& sim, const std::string& path) {
   thin_ice::writeFileAtomically(path, thin_ice::rubbleProfilesCsv(thin_ice::computeRubbleProfiles(sim.cells(), sim.params())));
 }
 
-/// What summary.json records of this run (run_record.hpp owns the file's layout).
-std::string summaryJson(const Simulation& sim, const Options& o, const RunResult& r, const Continuation& cont,
-                        const thin_ice::LoadStatistics& s, double setup_wall) {
+/// What summary.json records of this run (run_record.hpp owns the file's layout and writes it).
+thin_ice::run_record::SummaryRecord summaryRecord(const Simulation& sim, const Options& o, const RunResult& r,
+                                                  const Continuation& cont, const thin_ice::LoadStatistics& s,
+                                                  double setup_wall) {
   const double wall = cont.previous_wall + r.wall;  // [s] of every segment
   const thin_ice::Scenario& sc = sim.scenario();
   const thin_ice::Params& p = sim.params();
@@ -297,7 +298,7 @@ std::string summaryJson(const Simulation& sim, const Options& o, const RunResult
   record.bottom_depth = p.bottom.depth;
   record.bottom_distance_from_structure = p.bottom.distance_from_structure;
   record.experiment_json = thin_ice::experimentJson(sc.name, p.structure.width, s);
-  return thin_ice::run_record::summaryJson(record);
+  return record;
 }
 
 void printReport(const Simulation& sim, const Options& o, const thin_ice::LoadStatistics& s) {
@@ -610,8 +611,10 @@ int thin_ice::cli::runCommand(int argc, char** argv) {
     } else {
       std::filesystem::remove(checkpoint_path);
     }
+    const thin_ice::run_record::SummaryRecord record =
+        summaryRecord(*sim, options, result, continuation, stats, setup_wall);
     thin_ice::writeFileAtomically(options.out + "/" + thin_ice::run_record::kSummaryFile,
-                                  summaryJson(*sim, options, result, continuation, stats, setup_wall));
+                                  thin_ice::run_record::summaryJson(record));
     if (options.profiles) writeProfiles(*sim, options.out + "/profiles.csv");
     printReport(*sim, options, stats);
     return !result.error.empty() ? 3 : result.interrupted_by != 0 ? 4 : 0;

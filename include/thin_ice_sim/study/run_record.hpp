@@ -88,7 +88,7 @@ inline constexpr const char* kSnapshotColumns[] = {
     snapshot_column::kPieceCells, snapshot_column::kPolygon};
 
 /// A snapshot file's text: the header and one row per cell, `polygons[k]` cell k's world polygon
-/// [m] (nine significant digits).
+/// [m] (nine significant digits). Throws std::invalid_argument when the two lists differ in length.
 std::string snapshotText(const std::vector<CellSnapshot>& cells, const std::vector<std::vector<Vec2>>& polygons);
 
 /// snapshots/index.csv: one row per snapshot file.
@@ -121,20 +121,21 @@ struct SummaryRecord {
   double output_interval = 0.0;                       ///< [s] of a row of loads.csv
   double loads_csv_from = 0.0;                        ///< [s] where loads.csv's first row begins
   double load_bin_length = 0.0;                       ///< [m] of a bin of load_bins.csv
-  bool target_is_length = false;                      ///< the target: pushed length [m], or time [s]
-  double target = 0.0;
+  bool target_is_length = false;                      ///< the target: a pushed length, or a time
+  double target = 0.0;                                ///< [m] or [s], as target_is_length says
   long steps = 0;
   double simulated_time = 0.0, pushed_length = 0.0;   ///< [s], [m]
   double setup_wall_time = 0.0, wall_time = 0.0;      ///< [s] of wall-clock time, every segment's
-  double cell_steps_per_second = 0.0, real_time_factor = 0.0;
+  double cell_steps_per_second = 0.0;                 ///< [1/s] cells x steps over wall time
+  double real_time_factor = 0.0;                      ///< [-] simulated over wall time
   std::vector<double> resumed_at;                     ///< [m] where each resumption began
   struct Switch {
     std::string set;     ///< "section.key=value" given at a resumption
-    double from_length;  ///< [m] where it began to apply
+    double from_length = 0.0;  ///< [m] where it began to apply
   };
   std::vector<Switch> overrides_from;
   int intact_bonds = 0, broken_bonds = 0;
-  double calibration_factor = 1.0;                    ///< alpha of Eq. (18)
+  double calibration_factor = 1.0;                    ///< alpha [-] of Eq. (18)
   std::string load_json;                              ///< the statistics (run_report.hpp, loadJson)
   double structure_width = 0.0;                       ///< [m]
   double toe_x = 0.0, angle_deg = 0.0, structure_height = 0.0;  ///< [m], [deg], [m]
