@@ -1,7 +1,8 @@
 """Writes docs/validation.md from the runs of the scenarios as they stand (docs/validation/strips/
 and docs/validation/full/, each run's summary.json and kept record load_bins.csv): the table of
 every series of Table 5 against Table 6 (phase2_table), the seed spread and the strip-against-
-full-width check, issue #31's targets judged over those runs, one figure of every run's load, and,
+full-width check, issue #31's targets judged over those runs, the runs at another water depth over
+the false bottom beside their series' (depth_table), one figure of every run's load, and,
 taken in as they are, two hand-written files in the runs folder: phase2_why.md (why the loads
 miss, as far as the runs show it) under the table, and bench.md (how the runs are made and how far
 a strip stands for the full width) after the figure. Only what the runs measured is reported; a
@@ -21,6 +22,7 @@ import subprocess
 
 from .experiments import ALPHA, PEAK, STEADY_MEAN, STRUCTURE_WIDTH
 from .phase2_plot import SMOOTHING, draw
+from .depth_table import depth_table
 from .phase2_table import SERIES, phase2_table, runs_of, targets
 from . import run_record
 from .run_record import LOAD_BIN_LENGTH
@@ -120,6 +122,14 @@ def main(argv):
     lines.append("")
     lines += targets(a.runs)
     lines += hand_written(os.path.join(a.runs, "phase2_why.md"))
+    depth = depth_table(a.runs)
+    if depth:
+        lines += ["## The water depth over the false bottom", "",
+                  "Not in the paper; the scenarios set it (config/scenarios/base/tank.yaml). The strips run at",
+                  "another depth (config/strips/bottom-depth.matrix) beside those of the same series at the",
+                  "scenarios' depth, alpha F per metre of width over the same spans of pushed ice (a span where",
+                  "the run has pushed past its end), and the window the steady-state rule found at the run's end:", ""]
+        lines += depth + [""]
     experiment = {sid: (STEADY_MEAN[sid[0]] / STRUCTURE_WIDTH, PEAK[sid[0]] / STRUCTURE_WIDTH) for sid in SERIES}
     if draw(a.runs, os.path.join(a.runs, FIGURE), experiment):
         lines += ["## The loads", "",
