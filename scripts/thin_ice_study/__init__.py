@@ -4,8 +4,8 @@
 Each tool is a module with a main(argv) and a one-line SUMMARY, run through the one entry point
 beside this folder: `scripts/study COMMAND [ARGS...]` (`scripts/study --help` lists the commands).
 The modules without a main (run_record, run_summary, scenario_file, experiments, png_output,
-strip_loads, phase2_table, depth_table, refusal) are libraries of the tools and of the tests. Importing the package
-imports none of its modules, so that listing the commands needs neither matplotlib nor rospy.
+strip_loads, phase2_table, depth_table, refusal) are libraries of the tools and of the tests.
+Importing the package imports none of its modules, so that listing the commands needs neither matplotlib nor rospy.
 """
 import os
 
