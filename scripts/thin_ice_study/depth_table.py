@@ -13,6 +13,7 @@ import re
 
 from .experiments import ALPHA
 from . import run_record
+from .phase2_table import span_mean
 
 SPANS = ((2.0, 5.0), (5.0, 8.0), (8.0, 10.0))  # [m] of pushed ice: from after the first failures to where the depth runs reach
 DEPTH_RUN = re.compile(r"(?P<series>[WMS]-\d)-s(?P<seed>\d+)-bottom(?P<depth>\d+(?:\.\d+)?)")
@@ -47,15 +48,8 @@ def depth_runs(root):
 
 def span_means(path, spans=SPANS):
     """alpha F per metre of width [N/m] over each span the run pushed past (None for the others)."""
-    summary = run_record.require_summary(path)
-    bins = run_record.read_load_bins(path)
-    reached = summary[run_record.PUSHED_LENGTH]
-    width, run_alpha = summary[run_record.STRUCTURE_WIDTH], summary[run_record.CALIBRATION_FACTOR]
-    means = []
-    for begin, end in spans:
-        mean = run_record.mean_over(bins, begin, end) if reached >= end else None
-        means.append(None if mean is None else run_record.at_alpha(mean, run_alpha, ALPHA) / width)
-    return means
+    reached = run_record.require_summary(path)[run_record.PUSHED_LENGTH]
+    return [span_mean(path, end, begin) if reached >= end else None for begin, end in spans]
 
 
 def window_text(summary):

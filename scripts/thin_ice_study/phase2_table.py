@@ -79,11 +79,12 @@ def row(series, label, path):
     return "| " + " | ".join(cells) + " |"
 
 
-def span_mean(path, span):
-    """alpha F per metre of width averaged over 0-span [N/m], from the run's kept record (load_bins.csv:
-    the same in a clone as where the run was made), at the paper's alpha."""
+def span_mean(path, span, begin=-math.inf):
+    """alpha F per metre of width averaged over begin-span [N/m] (from the start by default), from the
+    run's kept record (load_bins.csv: the same in a clone as where the run was made), at the paper's
+    alpha."""
     summary = run_record.read_summary(path)
-    mean = run_record.mean_over(run_record.read_load_bins(path), -math.inf, span + 1e-9)
+    mean = run_record.mean_over(run_record.read_load_bins(path), begin, span + 1e-9)
     if mean is None:
         return float("nan")
     run_alpha, width = summary[run_record.CALIBRATION_FACTOR], summary[run_record.STRUCTURE_WIDTH]
