@@ -24,6 +24,7 @@ and stored by `thin_ice run` in DIR/summary.json, so `thin_ice resume DIR` goes 
 import functools
 import math
 import os
+import re
 
 import yaml
 
@@ -44,14 +45,22 @@ RUNNER_CANDIDATES = [  # the thin_ice program of each build, in order of prefere
 fail = functools.partial(refuse, PROG)  # bad input: one line, exit status 2
 
 
-def positive_number(flag, text):
+def length_value(flag, text):
+    """The length [m] > 0 that `text` gives for `flag`; ValueError naming both otherwise."""
     try:
         value = float(text)
     except ValueError:
         value = float("nan")
     if not (math.isfinite(value) and value > 0.0):
-        fail("%s %s; allowed: a length > 0 m" % (flag, text))
+        raise ValueError("%s %s; allowed: a length > 0 m" % (flag, text))
     return value
+
+
+def positive_number(flag, text):
+    try:
+        return length_value(flag, text)
+    except ValueError as e:
+        fail(str(e))
 
 
 def strip_overrides(scenario, width, length):
@@ -78,6 +87,47 @@ def strip_overrides(scenario, width, length):
     return overrides
 
 
+def read_matrix(path):
+    """The runs of a strip matrix file (config/strips/*.matrix, as scripts/strip_matrix reads it): one
+    (name, scenario, arguments) per line NAME SCENARIO [ARGUMENTS...], '#' starting a comment."""
+    runs = []
+    with open(path) as f:
+        for number, line in enumerate(f, 1):
+            words = line.split("#", 1)[0].split()
+            if not words:
+                continue
+            if len(words) < 2 or not re.fullmatch(r"[A-Za-z0-9._-]+", words[0]):
+                raise ValueError("%s line %d: '%s'; allowed: NAME SCENARIO [ARGUMENTS...], NAME in letters, digits, "
+                                 "'.', '_' and '-'" % (path, number, line.strip()))
+            runs.append((words[0], words[1], words[2:]))
+    return runs
+
+
+def matrix_run(scenario_path, args):
+    """What one line of a strip matrix asks for: (overrides, snapshots K, sheet length [m]). The
+    overrides are the strip's (strip_overrides) followed by the line's own --set values, which win;
+    K is the line's --snapshots over the sheet's length (0: none). A matrix line takes --width,
+    --length, --set and --snapshots; anything else raises ValueError naming it."""
+    width, length, snapshots, sets = 2.0, 10.0, 0, []
+    if len(args) % 2:
+        raise ValueError("arguments '%s'; allowed: pairs of --width W, --length L, --set KEY=VALUE, "
+                         "--snapshots K" % " ".join(args))
+    for flag, value in zip(args[::2], args[1::2]):
+        if flag == "--width":
+            width = length_value(flag, value)
+        elif flag == "--length":
+            length = length_value(flag, value)
+        elif flag == "--set":
+            sets.append(value)
+        elif flag == "--snapshots":
+            if not value.isdigit():
+                raise ValueError("--snapshots %s; allowed: a whole number >= 0" % value)
+            snapshots = int(value)
+        else:
+            raise ValueError("argument %s; allowed in a matrix line: --width, --length, --set, --snapshots" % flag)
+    return strip_overrides(scenario_file.load(scenario_path), width, length) + sets, snapshots, length
+
+
 def default_runner():
     runner = next((c for c in RUNNER_CANDIDATES if os.access(c, os.X_OK)), None)
     if runner is None:
@@ -96,9 +146,15 @@ def resume_snapshots(run_dir, until, args):
     if not snapshots:
         return ""
     reached = float(run_record.require_summary(run_dir)[run_record.PUSHED_LENGTH])
+    return "--snapshots %d" % segment_snapshots(snapshots, length, reached, until)
+
+
+def segment_snapshots(snapshots, length, reached, until):
+    """Snapshots of a resumption from `reached` to `until` (a length [m] or `end`) of a run that asked
+    for `snapshots` over its sheet `length` [m]: the same spacing, at least one."""
     target = length if until == "end" else float(until)  # "end": the pusher's travel, about --length
     segment = max(0.0, target - reached)
-    return "--snapshots %d" % max(1, int(round(snapshots * segment / length)))
+    return max(1, int(round(snapshots * segment / length)))
 
 
 def main(argv):

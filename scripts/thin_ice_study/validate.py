@@ -30,13 +30,20 @@ MATRIX OPTIONS
   --accept-changed-scenario  with --resume: take the scenario file's values where they differ from a run's own
                     where the run's parameters did not (the flag of that name of `thin_ice run`)
   --keep-existing   skip a run whose RECORDS/RUN/summary.json says it completed to the same length
+  --strips MATRIX   instead of --series, --seeds, --resolution and --tag: the runs of a strip matrix
+                    (config/strips/*.matrix, the lines scripts/strip_matrix runs: NAME SCENARIO
+                    [--width W] [--length L] [--set KEY=VALUE]... [--snapshots K]), each on its strip
+                    (scripts/study strip), named NAME; records default to docs/validation/strips and
+                    keep their checkpoints; --until-length defaults to the experiment's L of the
+                    series the scenario file is named after. So the strips can go to the experiments'
+                    lengths as one Slurm array: --strips config/strips/validation.matrix --resume --slurm
 WHERE
   --bin DIR         the folder holding the thin_ice program (default: install and build the catkin
                     workspace, and use .ws/devel/lib/thin_ice_sim)
   --work DIR        the run directories (DIR/validation/RUN) and the sweep (DIR/sweep: the task
                     list, each task's log and end status) (default .ws)
   --records DIR     where each run's summary.json, load_bins.csv, loads.csv, load.png and profiles.csv are
-                    copied (default docs/validation/full); the report covers the folder above it
+                    copied (default docs/validation/full, with --strips docs/validation/strips); the report covers the folder above it
                     (docs/validation: the full-width runs and the strips)
   --report FILE     the report to write (default docs/validation.md)
 RUNNING
@@ -62,7 +69,9 @@ import sys
 import time
 from concurrent.futures import ThreadPoolExecutor
 
-from . import ROOT, run_record, scenario_file
+import yaml
+
+from . import ROOT, run_record, scenario_file, strip
 from .phase2_table import EXPERIMENT_LENGTH, SERIES
 from .refusal import refuse
 
@@ -94,10 +103,10 @@ def parse_args(argv):
     o = {"series": [], "seeds": [], "resolution": False, "until": None, "sets": [], "tag": "",
          "backend": "auto", "wall_budget": None, "resume": False, "accept_changed": False,
          "keep_existing": False, "bin": None, "work": os.path.join(ROOT, ".ws"),
-         "records": os.path.join(ROOT, "docs/validation/full"), "report": os.path.join(ROOT, "docs/validation.md"),
-         "jobs": 1, "slurm": None, "collect": False, "report_only": False, "task": None}
+         "records": None, "report": os.path.join(ROOT, "docs/validation.md"),
+         "jobs": 1, "slurm": None, "collect": False, "report_only": False, "task": None, "strips": None}
     valued = {"--series", "--seeds", "--until-length", "--set", "--tag", "--backend", "--wall-budget", "--bin",
-              "--work", "--records", "--report", "--jobs"}
+              "--work", "--records", "--report", "--jobs", "--strips"}
     i = 0
     while i < len(argv):
         flag = argv[i]
@@ -158,12 +167,20 @@ def parse_args(argv):
             o["wall_budget"] = positive_int(flag, value)
         elif flag == "--jobs":
             o["jobs"] = positive_int(flag, value)
+        elif flag == "--strips":
+            if not os.path.isfile(value):
+                fail(f"--strips {value}: no such file; allowed: a strip matrix such as config/strips/validation.matrix")
+            o["strips"] = os.path.abspath(value)
         else:
             o[flag[2:]] = os.path.abspath(value)
     if o["accept_changed"] and not o["resume"]:
         fail("--accept-changed-scenario goes with --resume only")
     if o["slurm"] is not None and o["jobs"] != 1:
         fail("--jobs is for runs on this machine; under --slurm the cluster runs the tasks")
+    if o["strips"] and (o["series"] or o["seeds"] or o["resolution"] or o["tag"]):
+        fail("--strips names its runs itself; --series, --seeds, --resolution and --tag go without it")
+    if o["records"] is None:
+        o["records"] = os.path.join(ROOT, "docs/validation/strips" if o["strips"] else "docs/validation/full")
     if not o["series"]:
         o["series"] = list(SERIES)
     return o
@@ -176,12 +193,23 @@ def scenario_path(series):
     return os.path.join(ROOT, "config/scenarios", series + ".yaml")
 
 
-def default_length(series, name):
+def pusher_travel(scenario, overrides):
+    """The pusher's travel [m] (structure.toe_x - sheet.x_min) of a parsed scenario file with the
+    --set overrides given for the run."""
+    values = {"structure.toe_x": scenario["structure"]["toe_x"], "sheet.x_min": scenario["sheet"].get("x_min", 0.0)}
+    for o in overrides:
+        key, _, value = o.partition("=")
+        if key in values:
+            values[key] = value
+    return float(values["structure.toe_x"]) - float(values["sheet.x_min"])
+
+
+def default_length(run):
     """The experiment's pushed length (Table 5), or the pusher's travel where that is shorter."""
-    scenario = scenario_file.load(scenario_path(series))
-    travel = float(scenario["structure"]["toe_x"]) - float(scenario["sheet"].get("x_min", 0.0))
+    series, name = run["series"], run["name"]
+    travel = pusher_travel(scenario_file.load(run["scenario"]), run["overrides"])
     if series not in EXPERIMENT_LENGTH:
-        fail(f"--series {series} has no experiment's length (Table 5): give --until-length")
+        fail(f"{name}: {series} has no experiment's length (Table 5): give --until-length")
     length = EXPERIMENT_LENGTH[series]
     if length > travel:
         # The full-width sheets are 24 m long: the travel ends at 24.05 m, short of four
@@ -192,21 +220,45 @@ def default_length(series, name):
     return repr(length)
 
 
-def matrix(o):
-    """(name, series, overrides) of every run asked for."""
+def strip_matrix(path):
+    """The runs of a strip matrix (strip.read_matrix), each with its strip's overrides."""
     runs = []
+    try:
+        for name, scenario, args in strip.read_matrix(path):
+            scenario = os.path.join(ROOT, scenario)
+            overrides, snapshots, length = strip.matrix_run(scenario, args)
+            series = os.path.splitext(os.path.basename(scenario))[0]
+            runs.append({"name": name, "series": series, "scenario": scenario, "overrides": overrides,
+                         "snapshots": snapshots, "sheet_length": length})
+    except (OSError, ValueError, KeyError, TypeError, yaml.YAMLError) as e:
+        fail(f"--strips {path}: {e}")
+    return runs
+
+
+def matrix(o):
+    """Every run asked for: its name, series, scenario file, overrides, and the snapshots it takes
+    over its sheet's length (sheet_length None: that many over every segment)."""
+    if o["strips"]:
+        return strip_matrix(o["strips"])
+    runs = []
+
+    def run(name, series, overrides):
+        runs.append({"name": name, "series": series, "scenario": scenario_path(series), "overrides": overrides,
+                     "snapshots": 5, "sheet_length": None})
+
     for series in o["series"]:
         base = series + ("-" + o["tag"] if o["tag"] else "")
-        runs.append((base, series, []))
-        runs += [(f"{base}-s{k}", series, [f"sheet.seed={k}"]) for k in o["seeds"]]
+        run(base, series, [])
+        for k in o["seeds"]:
+            run(f"{base}-s{k}", series, [f"sheet.seed={k}"])
         if o["resolution"]:
             scenario = scenario_file.load(scenario_path(series))
             cell, dt = float(scenario["sheet"]["cell_size"]), float(scenario["numerics"]["time_step"])
             # Critical steps scale with the cell size (bonds: sqrt(m/k) ~ cell size; the structure:
             # ~ its square root), so the finer mesh steps at 0.85 dt with the same sub-step count.
             # 0.85 is as fine as the paper's A/h^2 > 10 lets 0.2 m cells of 52 mm ice go (0.17 m: 10.7).
-            runs.append((base + "-fine", series, [f"sheet.cell_size={0.85 * cell!r}", f"numerics.time_step={0.85 * dt!r}"]))
-            runs.append((base + "-halfdt", series, [f"numerics.time_step={0.5 * dt!r}"]))
+            run(base + "-fine", series, [f"sheet.cell_size={0.85 * cell!r}", f"numerics.time_step={0.85 * dt!r}"])
+            run(base + "-halfdt", series, [f"numerics.time_step={0.5 * dt!r}"])
     return runs
 
 
@@ -224,8 +276,9 @@ def completed_to(run_dir, length):
 def plan(o):
     """Prepares each run's directory and returns (tasks, refused names)."""
     tasks, refused = [], []
-    for name, series, overrides in matrix(o):
-        length = o["until"] or default_length(series, name)
+    for run in matrix(o):
+        name = run["name"]
+        length = o["until"] or default_length(run)
         record, run_dir = os.path.join(o["records"], name), os.path.join(o["work"], "validation", name)
         if o["keep_existing"] and completed_to(record, length):
             say(f"{name}: kept ({record}/summary.json: completed to L = {length} m)")
@@ -252,9 +305,15 @@ def plan(o):
                       run_record.LOADS_FILE):
                 if f != run_record.LOADS_FILE or os.path.isfile(os.path.join(record, f)):
                     shutil.copy(os.path.join(record, f), run_dir)
-        tasks.append({"name": name, "series": series, "length": length, "overrides": o["sets"] + overrides,
+        snapshots = run["snapshots"]
+        if snapshots and run["sheet_length"] and o["resume"]:
+            # A strip keeps the spacing of its line's K snapshots over its sheet (scripts/study strip).
+            reached = float(run_record.require_summary(record)[run_record.PUSHED_LENGTH])
+            snapshots = strip.segment_snapshots(snapshots, run["sheet_length"], reached, length)
+        tasks.append({"name": name, "series": run["series"], "scenario": run["scenario"], "length": length,
+                      "overrides": o["sets"] + run["overrides"], "snapshots": snapshots,
                       "run_dir": run_dir, "record": record, "resumed": o["resume"],
-                      "keep_checkpoint": bool(o["tag"])})
+                      "keep_checkpoint": bool(o["tag"] or o["strips"])})
     return tasks, refused
 
 
@@ -315,15 +374,19 @@ def run_task(sweep, index_text):
     else:
         shutil.rmtree(run_dir, ignore_errors=True)  # a start that left no checkpoint starts again
         os.makedirs(run_dir)
-        command = ["--scenario", scenario_path(task["series"])]
+        # (a sweep written before tasks named their scenario file names only the series)
+        command = ["--scenario", task.get("scenario") or scenario_path(task["series"])]
         for s in task["overrides"]:
             command += ["--set", s]
         threads = os.environ.get("SLURM_CPUS_PER_TASK") or ("1" if description["one_thread"] else None)
         if threads:
             command += ["--set", "numerics.threads=" + threads]
         command += ["--out", run_dir]
+    snapshots = task.get("snapshots", 5)
     command = sweep_runner(description) + command + [
-        "--backend", description["backend"], "--until-length", task["length"], "--profiles", "--snapshots", "5"]
+        "--backend", description["backend"], "--until-length", task["length"], "--profiles"]
+    if snapshots:
+        command += ["--snapshots", str(snapshots)]
     budget = description["wall_budget_s"]
     if budget is None and "SLURM_JOB_ID" in os.environ:
         budget = DEFAULT_SLURM_WALL_BUDGET
