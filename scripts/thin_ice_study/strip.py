@@ -103,11 +103,10 @@ def read_matrix(path):
     return runs
 
 
-def matrix_run(scenario_path, args):
-    """What one line of a strip matrix asks for: (overrides, snapshots K, sheet length [m]). The
-    overrides are the strip's (strip_overrides) followed by the line's own --set values, which win;
-    K is the line's --snapshots over the sheet's length (0: none). A matrix line takes --width,
-    --length, --set and --snapshots; anything else raises ValueError naming it."""
+def matrix_arguments(args):
+    """A strip matrix line's arguments: (width [m], sheet length [m], --set values, snapshots K over
+    the sheet's length, 0: none). A line takes --width, --length, --set and --snapshots; anything
+    else raises ValueError naming it."""
     width, length, snapshots, sets = 2.0, 10.0, 0, []
     if len(args) % 2:
         raise ValueError("arguments '%s'; allowed: pairs of --width W, --length L, --set KEY=VALUE, "
@@ -125,6 +124,13 @@ def matrix_run(scenario_path, args):
             snapshots = int(value)
         else:
             raise ValueError("argument %s; allowed in a matrix line: --width, --length, --set, --snapshots" % flag)
+    return width, length, sets, snapshots
+
+
+def matrix_run(scenario_path, args):
+    """What one line of a strip matrix asks for: (overrides, snapshots K, sheet length [m]). The
+    overrides are the strip's (strip_overrides) followed by the line's own --set values, which win."""
+    width, length, sets, snapshots = matrix_arguments(args)
     return strip_overrides(scenario_file.load(scenario_path), width, length) + sets, snapshots, length
 
 
@@ -137,12 +143,7 @@ def default_runner():
 
 def resume_snapshots(run_dir, until, args):
     """The --snapshots argument for resuming `run_dir` to `until` (see the usage), or ""."""
-    snapshots, length = None, 10.0
-    for flag, value in zip(args, args[1:]):
-        if flag == "--snapshots":
-            snapshots = int(value)
-        elif flag == "--length":
-            length = float(value)
+    _, length, _, snapshots = matrix_arguments(args)
     if not snapshots:
         return ""
     reached = float(run_record.require_summary(run_dir)[run_record.PUSHED_LENGTH])
@@ -167,7 +168,10 @@ def main(argv):
     if argv[0] == "--resume-snapshots":
         if len(argv) < 3:
             fail("--resume-snapshots needs DIR and UNTIL")
-        print(resume_snapshots(argv[1], argv[2], argv[3:]))
+        try:
+            print(resume_snapshots(argv[1], argv[2], argv[3:]))
+        except ValueError as e:
+            fail(str(e))
         return 0
     scenario_path, rest = argv[0], argv[1:]
     width, length, runner, passed = 2.0, 10.0, None, []

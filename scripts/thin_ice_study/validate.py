@@ -305,13 +305,9 @@ def plan(o):
                       run_record.LOADS_FILE):
                 if f != run_record.LOADS_FILE or os.path.isfile(os.path.join(record, f)):
                     shutil.copy(os.path.join(record, f), run_dir)
-        snapshots = run["snapshots"]
-        if snapshots and run["sheet_length"] and o["resume"]:
-            # A strip keeps the spacing of its line's K snapshots over its sheet (scripts/study strip).
-            reached = float(run_record.require_summary(record)[run_record.PUSHED_LENGTH])
-            snapshots = strip.segment_snapshots(snapshots, run["sheet_length"], reached, length)
         tasks.append({"name": name, "series": run["series"], "scenario": run["scenario"], "length": length,
-                      "overrides": o["sets"] + run["overrides"], "snapshots": snapshots,
+                      "overrides": o["sets"] + run["overrides"], "snapshots": run["snapshots"],
+                      "sheet_length": run["sheet_length"],
                       "run_dir": run_dir, "record": record, "resumed": o["resume"],
                       "keep_checkpoint": bool(o["tag"] or o["strips"])})
     return tasks, refused
@@ -361,6 +357,7 @@ def run_task(sweep, index_text):
         fail(f"--task {sweep} {index_text}: allowed: an index 0..{len(tasks) - 1}")
     task = tasks[int(index_text)]
     name, run_dir = task["name"], task["run_dir"]
+    snapshots = task.get("snapshots", 5)  # over a fresh run; a strip's resumed segment takes its share below
     log_path = os.path.join(sweep, "logs", name + ".log")
     status_path = os.path.join(sweep, "status", name + ".json")
     if (os.path.isfile(os.path.join(run_dir, run_record.CHECKPOINT_FILE))
@@ -369,6 +366,11 @@ def run_task(sweep, index_text):
             write_status(status_path, 0, "completed before")
             return 0
         command = ["--resume", run_dir]
+        if snapshots and task.get("sheet_length"):
+            # A strip keeps the spacing of its line's K snapshots over its sheet (scripts/study strip)
+            # on every segment, a requeued slice's too.
+            reached = float(run_record.require_summary(run_dir)[run_record.PUSHED_LENGTH])
+            snapshots = strip.segment_snapshots(snapshots, task["sheet_length"], reached, task["length"])
         if description["accept_changed_scenario"]:
             command.append("--accept-changed-scenario")
     else:
@@ -382,7 +384,6 @@ def run_task(sweep, index_text):
         if threads:
             command += ["--set", "numerics.threads=" + threads]
         command += ["--out", run_dir]
-    snapshots = task.get("snapshots", 5)
     command = sweep_runner(description) + command + [
         "--backend", description["backend"], "--until-length", task["length"], "--profiles"]
     if snapshots:
