@@ -2,7 +2,7 @@
 // device, calling the same inline laws (include/thin_ice_sim/physics/).
 //
 // One step, six kernels (one thread per cell, bond or pair):
-//   placeCells      world polygons, boxes, (cos, sin) yaw                    placeCell()
+//   placeCells      boxes, (cos, sin) yaw (no world polygons, below)         placeCell()
 //   bondForces      RMIB forces and failure, Eqs. 8-13                       rmibBondForce()
 //   contactForces   DEM contacts of the candidate pairs, Eqs. 1-4            demContactForce()
 //   stepCells       gather, water, planes, symplectic Euler, structure loads beginCellStep()
@@ -86,12 +86,17 @@ struct RunScalars {
 
 // --- The step ---------------------------------------------------------------------------------
 
+// No world polygons are kept: contactForces places the two polygons of a pair where it clips
+// them, a cell's step places its own only where a rigid plane is within its box (CellPolygon),
+// and stepCells places those of the few cells it hands to subcycleCells.
+// Writing up to 12 vertices per cell here and reading them back in the other kernels was the
+// largest share of placeCells' 677 B per cell-step at 10^6 cells (H200, 2026-12-04).
 __global__ void placeCells(int n, const RunScalars* run, const CellMotion* motion, const double* vertex_x,
-                           const double* vertex_y, const int* vertex_count, Vec2* world, double* box, Vec2* turn) {
+                           const double* vertex_y, const int* vertex_count, double* box, Vec2* turn) {
   const int k = blockIdx.x * blockDim.x + threadIdx.x;
   if (k >= n || run->stop) return;
-  turn[k] = placeCell(motion[k], vertex_x + (size_t)k * kV, vertex_y + (size_t)k * kV, vertex_count[k],
-                      world + (size_t)k * kV, box + 4 * k);
+  turn[k] = placeCell(motion[k], vertex_x + (size_t)k * kV, vertex_y + (size_t)k * kV, vertex_count[k], nullptr,
+                      box + 4 * k);
 }
 
 __global__ void bondForces(int bonds, RunScalars* run, ModelConstants c, const int* bond_i, const int* bond_j,
@@ -113,7 +118,8 @@ __global__ void bondForces(int bonds, RunScalars* run, ModelConstants c, const i
 }
 
 __global__ void contactForces(int capacity, RunScalars* run, ModelConstants c, const int* pair_i, const int* pair_j,
-                              const CellMotion* motion, const double* mass, const double* inertia, const Vec2* world,
+                              const CellMotion* motion, const double* mass, const double* inertia,
+                              const double* vertex_x, const double* vertex_y, const Vec2* turn,
                               const int* vertex_count, const double* radius, const double* box, double* reference,
                               int* separating_edge, unsigned char* touching, PairLoad* load) {
   const int p = blockIdx.x * blockDim.x + threadIdx.x;
@@ -134,9 +140,10 @@ __global__ void contactForces(int capacity, RunScalars* run, ModelConstants c, c
   }
   // Apart by more than the clip's rounding along the edge that kept them apart last time: the
   // clip would give no overlap (pair_separation.hpp; the CPU backend does the same).
-  const Vec2* wi = world + (size_t)i * kV;
-  const Vec2* wj = world + (size_t)j * kV;
   const int ni = vertex_count[i], nj = vertex_count[j];
+  Vec2 wi[kV], wj[kV];
+  placeVertices(motion[i], vertex_x + (size_t)i * kV, vertex_y + (size_t)i * kV, ni, turn[i], wi);
+  placeVertices(motion[j], vertex_x + (size_t)j * kV, vertex_y + (size_t)j * kV, nj, turn[j], wj);
   const double gap = c.separation_gap_fraction * (radius[i] + radius[j]);
   PolygonOverlap overlap;
   if (!clipUnlessApart(wi, ni, wj, nj, gap, separating_edge[p], overlap)) {
@@ -183,7 +190,7 @@ __device__ void raiseCellFlags(RunScalars* run, const ModelConstants& c, const C
 
 __global__ void stepCells(int n, RunScalars* run, ModelConstants c, CellStepInputs in, const CellMotion* reference,
                           CellMotion* motion, StructureContact* structure, int* subcycled_cells,
-                          HeldForces* held, double* totals, double* panels) {
+                          HeldForces* held, Vec2* start_polygons, double* totals, double* panels) {
   const int k = blockIdx.x * blockDim.x + threadIdx.x;
   if (k >= n || run->stop) return;
   double pusher_fx = 0.0;
@@ -191,10 +198,13 @@ __global__ void stepCells(int n, RunScalars* run, ModelConstants c, CellStepInpu
   const bool subcycled =
       beginCellStep(k, c, in, run->pusher_x, run->pusher_velocity, motion[k], structure[k], pusher_fx, h);
   if (pusher_fx != 0.0) atomicAdd(&totals[3], pusher_fx);
-  if (subcycled) {  // its step ends in subcycleCells
+  if (subcycled) {  // its step ends in subcycleCells, from its polygon at the step's start
     const int slot = atomicAdd(&run->subcycled, 1);
     subcycled_cells[slot] = k;
     held[slot] = h;
+    double box[4];  // placeCells' already
+    placeCell(motion[k], in.vertex_x + (size_t)k * kV, in.vertex_y + (size_t)k * kV, in.vertex_count[k],
+              start_polygons + (size_t)slot * kV, box);
     return;
   }
   raiseCellFlags(run, c, reference[k], motion[k]);
@@ -205,12 +215,12 @@ __global__ void stepCells(int n, RunScalars* run, ModelConstants c, CellStepInpu
 /// the device, and the launch is part of a captured graph.
 __global__ void subcycleCells(RunScalars* run, ModelConstants c, CellStepInputs in, const CellMotion* reference,
                               CellMotion* motion, StructureContact* structure, const int* subcycled_cells,
-                              const HeldForces* held, double* totals, double* panels) {
+                              const HeldForces* held, const Vec2* start_polygons, double* totals, double* panels) {
   if (run->stop) return;
   const int count = run->subcycled;
   for (int slot = blockIdx.x * blockDim.x + threadIdx.x; slot < count; slot += gridDim.x * blockDim.x) {
     const int k = subcycled_cells[slot];
-    subcycleStructureContact(k, c, in, held[slot], motion[k], structure[k]);
+    subcycleStructureContact(k, c, in, start_polygons + (size_t)slot * kV, held[slot], motion[k], structure[k]);
     raiseCellFlags(run, c, reference[k], motion[k]);
     addStructureLoads(c, structure[k], totals, panels);
   }
@@ -270,12 +280,12 @@ class CudaBackend final : public Backend {
     bond_state_.resize(bonds_);
     motion_.resize(n_);
     reference_.resize(n_);
-    world_.resize(static_cast<size_t>(n_) * kV);
     box_.resize(static_cast<size_t>(n_) * 4);
     turn_.resize(n_);
     structure_.resize(n_);
     subcycled_cells_.resize(n_);
     held_.resize(n_);
+    start_polygons_.resize(static_cast<size_t>(n_) * kV);
     subcycle_blocks_ = subcycleBlocks(n_);
     totals_.resize(kLoadTotals);
     panels_.resize(static_cast<size_t>(kLoadPerPanel) * model.constants.panels);
@@ -413,7 +423,7 @@ class CudaBackend final : public Backend {
     const ModelConstants& c = model_.constants;
     RunScalars* run = run_.get();
     placeCells<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, motion_.get(), vertex_x_.get(), vertex_y_.get(),
-                                                         vertex_count_.get(), world_.get(), box_.get(), turn_.get());
+                                                         vertex_count_.get(), box_.get(), turn_.get());
     if (bonds_ > 0) {
       bondForces<<<blocksFor(bonds_), kThreads, 0, stream_>>>(bonds_, run, c, bond_i_.get(), bond_j_.get(),
                                                                bond_rest_.get(), motion_.get(), mass_.get(),
@@ -423,7 +433,8 @@ class CudaBackend final : public Backend {
     const int capacity = contacts_.capacity();
     contactForces<<<blocksFor(capacity), kThreads, 0, stream_>>>(
         capacity, run, c, contacts_.pairI(), contacts_.pairJ(), motion_.get(), mass_.get(), inertia_.get(),
-        world_.get(), vertex_count_.get(), radius_.get(), box_.get(), contacts_.referenceArea(),
+        vertex_x_.get(), vertex_y_.get(), turn_.get(), vertex_count_.get(), radius_.get(), box_.get(),
+        contacts_.referenceArea(),
         contacts_.separatingEdge(), contacts_.touching(),
         contacts_.load());
     const CellStepInputs in = {mass_.get(),
@@ -435,7 +446,7 @@ class CudaBackend final : public Backend {
                                vertex_count_.get(),
                                vertex_x_.get(),
                                vertex_y_.get(),
-                               world_.get(),
+                               nullptr,  // no world polygons: placed where needed
                                box_.get(),
                                bond_offsets_.get(),
                                bond_entries_.get(),
@@ -447,11 +458,11 @@ class CudaBackend final : public Backend {
                                contacts_.load()};
     stepCells<<<blocksFor(n_), kThreads, 0, stream_>>>(n_, run, c, in, reference_.get(), motion_.get(),
                                                         structure_.get(), subcycled_cells_.get(), held_.get(),
-                                                        totals_.get(), panels_.get());
+                                                        start_polygons_.get(), totals_.get(), panels_.get());
     if (c.structure_substeps > 1) {
       subcycleCells<<<subcycle_blocks_, kSubcycleThreads, 0, stream_>>>(
           run, c, in, reference_.get(), motion_.get(), structure_.get(), subcycled_cells_.get(), held_.get(),
-          totals_.get(), panels_.get());
+          start_polygons_.get(), totals_.get(), panels_.get());
     }
     finishStep<<<1, 1, 0, stream_>>>(run, c.time_step, c.max_steps_between_rebuilds);
   }
@@ -531,11 +542,12 @@ class CudaBackend final : public Backend {
   DeviceArray<CellMotion> motion_, reference_;
   DeviceArray<unsigned char> bond_state_;  ///< (bonds) BondState
   DeviceArray<PairLoad> bond_load_;  ///< (bonds)
-  DeviceArray<Vec2> world_, turn_;
+  DeviceArray<Vec2> turn_;
   DeviceArray<double> box_;
   DeviceArray<StructureContact> structure_;
   DeviceArray<int> subcycled_cells_;  ///< (cells) the cells listed for subcycleCells, run->subcycled of them
   DeviceArray<HeldForces> held_;      ///< (cells) what their sub-steps hold, by list slot
+  DeviceArray<Vec2> start_polygons_;  ///< (cells x kV) their polygons at the step's start, by list slot
   int subcycle_blocks_ = 1;           ///< subcycleCells' grid
   DeviceArray<double> totals_, panels_;
   DeviceArray<RunScalars> run_;

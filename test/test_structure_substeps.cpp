@@ -82,25 +82,29 @@ struct LoneCell {
     bond_load[0].force_on_j = {fx, 0.0};
   }
 
-  /// The step's inputs, with the cell placed at its current pose.
-  CellStepInputs place() {
-    placeCell(motion, vertex_x, vertex_y, vertex_count, world, box);
+  /// The step's inputs, with the cell placed at its current pose: its world polygon too, as the
+  /// CPU backend places it, unless `keep_world` is false (the CUDA backend keeps none).
+  CellStepInputs place(bool keep_world = true) {
+    placeCell(motion, vertex_x, vertex_y, vertex_count, keep_world ? world : nullptr, box);
     return {&mass,           &inertia,        &area,         &inverse_mass,
             &inverse_inertia, &polar_moment,   &vertex_count, vertex_x,
-            vertex_y,        world,           box,           bond_offsets,
+            vertex_y,        keep_world ? world : nullptr,    box,           bond_offsets,
             bond_entries,    bond_state,      bond_load,     contact_offsets,
             nullptr,         nullptr,         nullptr};
   }
 
-  void step(const ModelConstants& c) {
-    const CellStepInputs in = place();
+  void step(const ModelConstants& c, bool keep_world = true, double pusher_x = -100.0, double pusher_velocity = 0.0) {
+    const CellStepInputs in = place(keep_world);
     StructureContact s;
-    const CellStepResult r = stepCell(0, c, in, -100.0, 0.0, kRunawaySpeed, reference, motion, s);
+    const CellStepResult r = stepCell(0, c, in, pusher_x, pusher_velocity, kRunawaySpeed, reference, motion, s);
     ASSERT_FALSE(r.blown);
     last_structure_fx = 0.0;
     for (int slot = 0; slot < s.panel_count; ++slot) last_structure_fx += s.fx[slot];
     structure_impulse_x += last_structure_fx * c.time_step;
+    pusher_impulse_x += r.pusher_fx * c.time_step;
   }
+
+  double pusher_impulse_x = 0.0;  ///< [N s] of the pusher on the cell, summed over the steps
 };
 
 TEST(StructureSubsteps, ElasticImpactOnAVerticalFaceReboundsAtTheSpeedItCameIn) {
@@ -209,7 +213,7 @@ TEST(StructureSubsteps, TheFirstHalfHandsOnExactlyTheCellsThatCanReachTheFaceWit
       const CellStepInputs whole_in = whole.place();
       StructureContact whole_s;
       stepCell(0, c, whole_in, -100.0, 0.0, kRunawaySpeed, whole.reference, whole.motion, whole_s);
-      subcycleStructureContact(0, c, in, held, cell.motion, s);
+      subcycleStructureContact(0, c, in, in.world, held, cell.motion, s);
       EXPECT_EQ(cell.motion.x, whole.motion.x);
       EXPECT_EQ(cell.motion.vx, whole.motion.vx);
       EXPECT_EQ(s.panel_count, whole_s.panel_count);
@@ -229,6 +233,80 @@ TEST(StructureSubsteps, TheFirstHalfHandsOnExactlyTheCellsThatCanReachTheFaceWit
   EXPECT_FALSE(beginCellStep(0, single, in, -100.0, 0.0, pressed.motion, s, pusher_fx, held));
   EXPECT_EQ(s.panel_count, 1);
   EXPECT_GT(s.fx[0], 0.0);  // the ice pushes the structure in +x
+}
+
+TEST(StructureSubsteps, ACellStepThatPlacesItsOwnPolygonMovesAsOneGivenThePlacedPolygon) {
+  // The CUDA backend keeps no world polygons (CellStepInputs::world null): a cell's step places
+  // its own where a plane is within its box (CellPolygon). A turned, irregular pentagon pressed
+  // at once by the pusher, a side wall, the false bottom and the structure face (handed on to the
+  // sub-steps) must move as it does with the polygon placed beforehand, as the CPU backend
+  // places it, to the rounding of the placement (below).
+  auto pentagon = [](double y) {
+    LoneCell cell(0.0, 0.02);  // at the pusher's speed
+    const double px[] = {-0.09, 0.07, 0.1, 0.02, -0.1}, py[] = {-0.1, -0.08, 0.03, 0.1, 0.04};
+    for (int v = 0; v < 5; ++v) {
+      cell.vertex_x[v] = px[v];
+      cell.vertex_y[v] = py[v];
+    }
+    cell.vertex_count = 5;
+    cell.motion.y = y;
+    cell.motion.yaw = 0.4;
+    cell.motion.vy = 0.05;
+    cell.reference = cell.motion;
+    return cell;
+  };
+  double box[4];
+  const LoneCell start = pentagon(0.02);
+  placeCell(start.motion, start.vertex_x, start.vertex_y, start.vertex_count, nullptr, box);
+  ModelConstants c = loneCell(box[1] - 1e-6, 0.2, kOuterStep, 8);  // its front 1 um into the face
+  const PlaneContactConstants plane = {1e9, kH, 0.3, 0.2, 1e-3, kBeta / kOuterStep};
+  c.pusher = plane;
+  c.walls_enabled = true;
+  c.wall = plane;
+  c.wall_half_width = 0.1;  // the cell, centred at y = 0.02, reaches past it
+  c.wall_x_start = 0.0;     // from the cell's middle: only its front part meets the wall
+  c.bottom_enabled = true;
+  c.bottom = plane;
+  c.bottom_x_start = -1.0;
+  const double z_low = pentagon(0.0).motion.z - 0.5 * kH;
+  c.bottom_z = z_low + 1e-3;  // the bottom 1 mm into the slab
+  for (const bool walls_and_bottom : {false, true}) {
+    ModelConstants k = c;
+    k.walls_enabled = k.bottom_enabled = walls_and_bottom;
+    LoneCell placed = pentagon(0.02), own = pentagon(0.02);
+    const double pusher_x = box[0] + 2e-4;  // 0.2 mm into the cell's back
+    for (int s = 0; s < 40; ++s) {
+      placed.step(k, true, pusher_x + 0.02 * s * kOuterStep, 0.02);
+      own.step(k, false, pusher_x + 0.02 * s * kOuterStep, 0.02);
+    }
+    EXPECT_GT(own.pusher_impulse_x, 0.0);
+    EXPECT_GT(own.structure_impulse_x, 0.0);
+    // Not bit for bit: the compilers fuse multiply-adds (x86-64-v3 here, nvcc on the GPU) where
+    // the inlined placement lands, so a vertex placed here and one placed by the backend can
+    // differ by one rounding, 1e-17 m. A contact's force goes with its penetration (1 um here), so
+    // it can move by 1e-17 / 1e-6 = 1e-11 of itself; the pose by far less. Seen: the motion equal,
+    // the structure's impulse one unit in the last place apart. Tried: placing the polygon 0.5 um
+    // off the pose moved x by 8e-9 m and the yaw by 9e-8 rad; not placing it at all, by 5e-6 m.
+    EXPECT_NEAR(own.motion.x, placed.motion.x, 1e-12);  // [m]
+    EXPECT_NEAR(own.motion.y, placed.motion.y, 1e-12);
+    EXPECT_NEAR(own.motion.z, placed.motion.z, 1e-12);
+    EXPECT_NEAR(own.motion.yaw, placed.motion.yaw, 1e-12);  // [rad]
+    EXPECT_NEAR(own.motion.vx, placed.motion.vx, 1e-12);    // [m/s]
+    EXPECT_NEAR(own.motion.vy, placed.motion.vy, 1e-12);
+    EXPECT_NEAR(own.motion.vz, placed.motion.vz, 1e-12);
+    EXPECT_NEAR(own.motion.wz, placed.motion.wz, 1e-12);  // [rad/s]
+    EXPECT_NEAR(own.pusher_impulse_x, placed.pusher_impulse_x, 1e-10 * placed.pusher_impulse_x);  // [N s]
+    EXPECT_NEAR(own.structure_impulse_x, placed.structure_impulse_x, 1e-10 * placed.structure_impulse_x);
+    if (walls_and_bottom) {
+      // The wall and the bottom acted: without them the cell moves otherwise.
+      LoneCell free = pentagon(0.02);
+      ModelConstants none = c;
+      none.walls_enabled = none.bottom_enabled = false;
+      for (int s = 0; s < 40; ++s) free.step(none, false, pusher_x + 0.02 * s * kOuterStep, 0.02);
+      EXPECT_NE(free.motion.vy, own.motion.vy);
+      EXPECT_NE(free.motion.vz, own.motion.vz);
+    }
+  }
 }
 
 }  // namespace

@@ -353,7 +353,7 @@ class CpuBackend final : public Backend {
     reduction(|| : blown, moved_far)
     for (int i = 0; i < subcycled; ++i) {
       const int k = subcycled_cells_[i];
-      subcycleStructureContact(k, c, in, held_[k], motion_[k], structure_[k]);
+      subcycleStructureContact(k, c, in, &world_[static_cast<size_t>(k) * kV], held_[k], motion_[k], structure_[k]);
       CellStepResult r;
       judgeCellStep(c, kRunawaySpeed, reference_[k], motion_[k], r);
       loaded_[k] = pusher_fx_[k] != 0.0 || structure_[k].panel_count > 0;

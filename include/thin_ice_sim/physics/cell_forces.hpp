@@ -96,7 +96,9 @@ struct CellStepInputs {
   const int* vertex_count;            ///< (cells)
   const double* vertex_x;             ///< (cells x kMaxPolygonVertices) body-frame vertices [m]
   const double* vertex_y;
-  const Vec2* world;                  ///< (cells x kMaxPolygonVertices) world vertices [m]
+  /// (cells x kMaxPolygonVertices) world vertices [m] at the step's start, or null: the step
+  /// places a cell's polygon itself where it needs one (CellPolygon)
+  const Vec2* world;
   const double* box;                  ///< (cells x 4) x0 x1 y0 y1 [m]
   const int* bond_offsets;            ///< (cells + 1)
   const int* bond_entries;
@@ -162,6 +164,67 @@ TIS_HD bool structurePanelRange(const ModelConstants& c, double y0, double y1, i
   return y1 > c.structure_y_min && y0 < y_end && first <= last;
 }
 
+/// World position [m] of the body-frame vertex (lx, ly) of a cell at pose `m` whose yaw is
+/// turned by (cs, sn) = (cos, sin) yaw. Every placement goes through here, so a polygon placed
+/// where it is used is the one a backend's placed array holds, to one rounding: the compilers
+/// may fuse its multiply-adds differently where it is inlined.
+TIS_HD Vec2 worldVertex(const CellMotion& m, double lx, double ly, double cs, double sn) {
+  return Vec2{m.x, m.y} + rotate(Vec2{lx, ly}, cs, sn);
+}
+
+/// World vertices of a cell at pose `m` whose (cos, sin) yaw `turn` is known (placeCell's).
+TIS_HD void placeVertices(const CellMotion& m, const double* vertex_x, const double* vertex_y, int count, Vec2 turn,
+                          Vec2* world) {
+  for (int v = 0; v < count; ++v) world[v] = worldVertex(m, vertex_x[v], vertex_y[v], turn.x, turn.y);
+}
+
+/// Bounding box (x0 x1 y0 y1) of a cell at pose `m` and, unless `world` is null, its world
+/// vertices; returns (cos, sin) yaw.
+TIS_HD Vec2 placeCell(const CellMotion& m, const double* vertex_x, const double* vertex_y, int count, Vec2* world,
+                      double* box) {
+  const double cs = cos(m.yaw), sn = sin(m.yaw);
+  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
+  for (int v = 0; v < count; ++v) {
+    const Vec2 w = worldVertex(m, vertex_x[v], vertex_y[v], cs, sn);
+    if (world != nullptr) world[v] = w;
+    x0 = minOf(x0, w.x); x1 = maxOf(x1, w.x);
+    y0 = minOf(y0, w.y); y1 = maxOf(y1, w.y);
+  }
+  box[0] = x0; box[1] = x1; box[2] = y0; box[3] = y1;
+  return {cs, sn};
+}
+
+/// A cell's world polygon at the pose `pose` where its step needs one (a rigid plane within its
+/// box, the structure face): the backend's placed array when it keeps one (the CPU backend,
+/// whose contact pass needs every polygon anyway), or, when CellStepInputs::world is null (the
+/// CUDA backend, which keeps none: it saves writing and rereading up to 12 vertices per cell and
+/// step), placed here from the body-frame vertices the first time it is asked for. Most cells
+/// touch no plane and never ask.
+struct CellPolygon {
+  const CellMotion& pose;
+  const double* vertex_x;  ///< body frame [m]
+  const double* vertex_y;
+  int count;
+  const Vec2* placed;      ///< null until placed, where the backend keeps no world array
+  Vec2 own[kMaxPolygonVertices];
+
+  TIS_HD const Vec2* vertices() {
+    if (placed == nullptr) {
+      double box[4];
+      placeCell(pose, vertex_x, vertex_y, count, own, box);
+      placed = own;
+    }
+    return placed;
+  }
+};
+
+/// Cell k's CellPolygon at `pose` (its pose at the step's start).
+TIS_HD CellPolygon cellPolygonOf(const CellStepInputs& in, int k, const CellMotion& pose) {
+  const size_t first = (size_t)k * kMaxPolygonVertices;
+  return {pose, in.vertex_x + first, in.vertex_y + first, in.vertex_count[k],
+          in.world == nullptr ? nullptr : in.world + first, {}};
+}
+
 /// Forces of the structure face's panels first..last (Eq. 17) on a cell (world polygon `poly` of
 /// n vertices, pose `m`), added to (fx, fy, fz, tz); slot p - first of `s` gets panel p's force
 /// on the structure and where it acts (a panel the cell misses gets a zero slot).
@@ -186,28 +249,30 @@ TIS_HD void addStructureForces(const ModelConstants& c, const Vec2* poly, int n,
   }
 }
 
-/// Forces of the pusher, the basin walls and the false bottom on a cell (world polygon `poly` of
-/// n vertices, bounding box `box`), added to (fx, fy, fz, tz). Returns the pusher's x force [N].
-TIS_HD double addRigidPlaneForces(const ModelConstants& c, const Vec2* poly, int n, const double* box,
+/// Forces of the pusher, the basin walls and the false bottom on a cell (its polygon `poly`, placed
+/// only if a plane is within the bounding box `box`), added to (fx, fy, fz, tz). Returns the
+/// pusher's x force [N].
+TIS_HD double addRigidPlaneForces(const ModelConstants& c, CellPolygon& poly, const double* box,
                                   const CellMotion& m, double mass, double inertia, double area,
                                   double pusher_x, double pusher_velocity, double& fx, double& fy, double& fz,
                                   double& tz) {
   const double h = c.contact.thickness;
+  const int n = poly.count;
   const double z_low = m.z - 0.5 * h, z_high = m.z + 0.5 * h;
   double pusher_fx = 0.0;
   // Pusher: solid x < pusher_x, outward normal +x.
   if (box[0] < pusher_x) {
     const RigidPlane plate = {1.0, 0.0, 0.0, pusher_x};
-    pusher_fx = addPlaneContact(slabPenetration(poly, n, z_low, z_high, plate), plate, c.pusher, m, mass, inertia,
-                                area, pusher_velocity, fx, fy, fz, tz).fx;
+    pusher_fx = addPlaneContact(slabPenetration(poly.vertices(), n, z_low, z_high, plate), plate, c.pusher, m, mass,
+                                inertia, area, pusher_velocity, fx, fy, fz, tz).fx;
   }
   // Basin walls (or the structure's side panels): solid |y| > half width, for x >= wall_x_start
   // (only the part of the cell beyond that x meets a side panel).
   if (c.walls_enabled && box[1] > c.wall_x_start && (box[3] > c.wall_half_width || box[2] < -c.wall_half_width)) {
     Vec2 part[kMaxPolygonVertices + 1];
     const bool whole = box[0] >= c.wall_x_start;
-    const int count = whole ? n : clipPolygonByHalfPlane(poly, n, -1.0, 0.0, -c.wall_x_start, part);
-    const Vec2* reach = whole ? poly : part;
+    const int count = whole ? n : clipPolygonByHalfPlane(poly.vertices(), n, -1.0, 0.0, -c.wall_x_start, part);
+    const Vec2* reach = whole ? poly.vertices() : part;
     if (box[3] > c.wall_half_width) {
       const RigidPlane wall = {0.0, -1.0, 0.0, -c.wall_half_width};
       addPlaneContact(slabPenetration(reach, count, z_low, z_high, wall), wall, c.wall, m, mass, inertia, area, 0.0,
@@ -222,27 +287,12 @@ TIS_HD double addRigidPlaneForces(const ModelConstants& c, const Vec2* poly, int
   // False bottom: solid z < bottom_z for x >= bottom_x_start.
   if (c.bottom_enabled && z_low < c.bottom_z && box[1] > c.bottom_x_start) {
     Vec2 part[kMaxPolygonVertices + 1];
-    const int count = clipPolygonByHalfPlane(poly, n, -1.0, 0.0, -c.bottom_x_start, part);
+    const int count = clipPolygonByHalfPlane(poly.vertices(), n, -1.0, 0.0, -c.bottom_x_start, part);
     const RigidPlane floor = {0.0, 0.0, 1.0, c.bottom_z};
     addPlaneContact(slabPenetration(part, count, z_low, z_high, floor), floor, c.bottom, m, mass, inertia, area, 0.0,
                     fx, fy, fz, tz);
   }
   return pusher_fx;
-}
-
-/// World vertices and bounding box (x0 x1 y0 y1) of a cell at pose `m`; returns (cos, sin) yaw.
-TIS_HD Vec2 placeCell(const CellMotion& m, const double* vertex_x, const double* vertex_y, int count, Vec2* world,
-                      double* box) {
-  const double cs = cos(m.yaw), sn = sin(m.yaw);
-  double x0 = 1e300, x1 = -1e300, y0 = 1e300, y1 = -1e300;
-  for (int v = 0; v < count; ++v) {
-    const Vec2 w = Vec2{m.x, m.y} + rotate(Vec2{vertex_x[v], vertex_y[v]}, cs, sn);
-    world[v] = w;
-    x0 = minOf(x0, w.x); x1 = maxOf(x1, w.x);
-    y0 = minOf(y0, w.y); y1 = maxOf(y1, w.y);
-  }
-  box[0] = x0; box[1] = x1; box[2] = y0; box[3] = y1;
-  return {cs, sn};
 }
 
 /// What the first half of a cell's step hands to its second half when the cell takes the
@@ -257,11 +307,14 @@ struct HeldForces {
 /// (subcycleCells) takes 136 registers and a 1296 B stack frame, and stepCells, which no longer
 /// does, 150 and 1024 B (160 and 1296 B when stepCells ran the sub-steps itself).
 /// n sub-steps of dt/n of one cell that can reach the structure (see the file comment): the
-/// face's force anew in each, the slow forces (fx, fy, fz, tz) held. `s` gets the mean load of
+/// face's force anew in each, the slow forces (fx, fy, fz, tz) held. `start_polygon` is the
+/// cell's world polygon at the step's start (the backend's placed one, or placed for it). `s`
+/// gets the mean load of
 /// each panel slot over the sub-steps and its force-weighted mean point (the cell moves
 /// micrometres in one step, so the moment of the mean is the mean moment to that accuracy).
 TIS_HD void subcycleStructureContact(int k, const ModelConstants& c, const CellStepInputs& in,
-                                     const HeldForces& held, CellMotion& motion, StructureContact& s) {
+                                     const Vec2* start_polygon, const HeldForces& held, CellMotion& motion,
+                                     StructureContact& s) {
   const double margin = held.travel;
   const int n = in.vertex_count[k];
   const double mass = in.mass[k], inertia = in.inertia[k], area = in.area[k];
@@ -289,7 +342,7 @@ TIS_HD void subcycleStructureContact(int k, const ModelConstants& c, const CellS
   double box[4];
   StructureContact now;
   for (int step = 0; step < substeps; ++step) {
-    const Vec2* placed = in.world + (size_t)k * kMaxPolygonVertices;  // the pose at the step's start
+    const Vec2* placed = start_polygon;  // the pose at the step's start
     if (step > 0) {
       placeCell(motion, in.vertex_x + (size_t)k * kMaxPolygonVertices, in.vertex_y + (size_t)k * kMaxPolygonVertices,
                 n, poly, box);
@@ -345,10 +398,10 @@ TIS_HD bool beginCellStep(int k, const ModelConstants& c, const CellStepInputs& 
   const double inverse_mass = in.inverse_mass[k], inverse_inertia = in.inverse_inertia[k];
   const WaterForce w = waterForce(c.water, mass, area, in.polar_moment[k], m.z, {m.vx, m.vy}, m.vz, m.wz);
   fx += w.horizontal.x; fy += w.horizontal.y; fz += w.vertical; tz += w.torque;
-  const Vec2* poly = in.world + (size_t)k * kMaxPolygonVertices;
   const int n = in.vertex_count[k];
+  CellPolygon poly = cellPolygonOf(in, k, m);
   const double* box = in.box + 4 * k;
-  pusher_fx = addRigidPlaneForces(c, poly, n, box, m, mass, inertia, area, pusher_x, pusher_velocity, fx, fy, fz, tz);
+  pusher_fx = addRigidPlaneForces(c, poly, box, m, mass, inertia, area, pusher_x, pusher_velocity, fx, fy, fz, tz);
   const double z_low = m.z - 0.5 * c.contact.thickness;
   const double dt = c.time_step;
   // With sub-steps: a bound on how far any point of the cell can travel in this step [m], with
@@ -370,7 +423,7 @@ TIS_HD bool beginCellStep(int k, const ModelConstants& c, const CellStepInputs& 
   structure.panel_count = 0;
   int first, last;
   if (reachesStructure(c, box, z_low, 0.0) && structurePanelRange(c, box[2], box[3], first, last)) {
-    addStructureForces(c, poly, n, m, mass, inertia, area, first, last, structure, fx, fy, fz, tz);
+    addStructureForces(c, poly.vertices(), n, m, mass, inertia, area, first, last, structure, fx, fy, fz, tz);
   }
   integrateSymplecticEuler(motion, fx, fy, fz, tz, inverse_mass, inverse_inertia, dt);
   return false;
@@ -395,7 +448,8 @@ TIS_HD CellStepResult stepCell(int k, const ModelConstants& c, const CellStepInp
   CellStepResult r;
   HeldForces held;
   if (beginCellStep(k, c, in, pusher_x, pusher_velocity, motion, structure, r.pusher_fx, held)) {
-    subcycleStructureContact(k, c, in, held, motion, structure);
+    CellPolygon start = cellPolygonOf(in, k, motion);  // the first half left the pose as it was
+    subcycleStructureContact(k, c, in, start.vertices(), held, motion, structure);
   }
   judgeCellStep(c, runaway_speed, reference, motion, r);
   return r;
