@@ -361,6 +361,33 @@ BondRest unitBond() {
 
 BondConstants bondLaw(double coupling) { return {0.05, 1.0, 1.0, 100e3, 130e3, coupling}; }
 
+TEST(Bond, ItsSpringsFollowFromItsShapeAndTheMassesOfItsCells) {
+  // Eqs. (11)-(12): k = modulus h L_e / d. h = 0.05 m, L_e = 0.2 m, d = 0.25 m: h L_e / d = 0.04 m.
+  // E = 5e8 Pa, nu = 0.3: G = E / 2.6 = 1.9231e8 Pa; E_v = 1e8 Pa: G_v = 3.8462e7 Pa. So
+  // k_n = 2e7, k_s = 7.6923e6 and k_v = 1.5385e6 N/m. Masses 2 and 3 kg: m_red = 1.2 kg; zeta = 0.1:
+  // c = 0.2 sqrt(1.2 k) = 979.796, 607.644 and 271.746 N s/m.
+  BondConstants c = bondLaw(0.0);
+  c.youngs_modulus = 5e8;
+  c.shear_modulus = 5e8 / 2.6;
+  c.vertical_shear_modulus = 1e8 / 2.6;
+  c.damping_ratio = 0.1;
+  const BondShape shape = {{0.12, 0.01}, {-0.13, -0.02}, {0.6, 0.8}, 0.2, 0.25};
+  const BondRest b = bondRestOf(shape, 2.0, 3.0, c);
+  EXPECT_NEAR(b.k_normal, 2e7, 1e-12 * 2e7);
+  EXPECT_NEAR(b.k_shear, 7.692307692307692e6, 1e-12 * 7.7e6);
+  EXPECT_NEAR(b.k_vertical, 1.538461538461538e6, 1e-12 * 1.5e6);
+  EXPECT_NEAR(b.damping_normal, 979.7958971132712, 1e-12 * 980.0);
+  EXPECT_NEAR(b.damping_shear, 607.6436202502, 1e-12 * 608.0);
+  EXPECT_NEAR(b.damping_vertical, 271.7464881947030, 1e-12 * 272.0);
+  // The shape passes through unchanged, and is what bondShapeOf gives back.
+  const BondShape back = bondShapeOf(b);
+  EXPECT_EQ(back.anchor_i.x, 0.12);
+  EXPECT_EQ(back.anchor_j.y, -0.02);
+  EXPECT_EQ(back.normal.y, 0.8);
+  EXPECT_EQ(back.edge_length, 0.2);
+  EXPECT_EQ(back.distance, 0.25);
+}
+
 TEST(Bond, PulledApartItBreaksAtTheFlexuralStrength) {
   // sigma_h = k_n u / (h L_e) = sigma_f at u = sigma_f h L_e / k_n = 1e5 * 0.01 / 1.5e7 = 6.667e-5 m.
   const BondRest b = unitBond();

@@ -33,7 +33,11 @@ ModelConstants makeConstants(const Params& p, const IceSheet& sheet) {
             ice.smoothing_exponent_v,
             ice.flexural_strength,
             ice.compressive_strength,
-            ice.compression_coupling};
+            ice.compression_coupling,
+            ice.youngs_modulus,
+            ice.youngs_modulus / (2.0 * (1.0 + ice.poisson_ratio)),
+            ice.vertical_modulus / (2.0 * (1.0 + ice.poisson_ratio)),
+            ice.bond_damping_ratio};
   c.separation_gap_fraction = kSeparationGapFraction;
   c.water = {p.water.density,       p.water.gravity,        h, p.water.linear_drag,
              p.water.quadratic_drag, p.water.vertical_linear_drag, p.water.vertical_quadratic_drag};
@@ -118,12 +122,11 @@ Model buildModel(const Params& params, const IceSheet& sheet, const std::string&
     m.initial[k] = {c.centroid.x, c.centroid.y, z_float, 0.0, 0.0, 0.0, 0.0, 0.0};
   }
 
-  const double shear_modulus = ice.youngs_modulus / (2.0 * (1.0 + ice.poisson_ratio));
-  const double vertical_shear_modulus = ice.vertical_modulus / (2.0 * (1.0 + ice.poisson_ratio));
+  m.constants = makeConstants(params, sheet);
   for (const SharedEdge& e : sheet.edges) {
     const CellGeometry& ci = sheet.cells[e.i];
     const CellGeometry& cj = sheet.cells[e.j];
-    BondRest b;
+    BondShape b;
     const Vec2 mid = e.midpoint();
     b.anchor_i = mid - ci.centroid;
     b.anchor_j = mid - cj.centroid;
@@ -133,21 +136,11 @@ Model buildModel(const Params& params, const IceSheet& sheet, const std::string&
     Vec2 normal = perpendicular((1.0 / e.length) * (e.end - e.start));
     if (dot(normal, cj.centroid - ci.centroid) < 0.0) normal = -normal;
     b.normal = normal;
-    const double bar = h * e.length / b.distance;  // section over length [m]
-    b.k_normal = ice.youngs_modulus * bar;
-    b.k_shear = shear_modulus * bar;
-    b.k_vertical = vertical_shear_modulus * bar;
-    const double reduced_mass = m.mass[e.i] * m.mass[e.j] / (m.mass[e.i] + m.mass[e.j]);
-    const double two_zeta = 2.0 * ice.bond_damping_ratio;
-    b.damping_normal = two_zeta * std::sqrt(b.k_normal * reduced_mass);
-    b.damping_shear = two_zeta * std::sqrt(b.k_shear * reduced_mass);
-    b.damping_vertical = two_zeta * std::sqrt(b.k_vertical * reduced_mass);
     m.bond_i.push_back(e.i);
     m.bond_j.push_back(e.j);
-    m.bond_rest.push_back(b);
+    m.bond_rest.push_back(bondRestOf(b, m.mass[e.i], m.mass[e.j], m.constants.bond));
   }
 
-  m.constants = makeConstants(params, sheet);
   // Candidates: bounding circles closer than a margin that covers the motion allowed between
   // rebuilds (two cells each moving rebuild_displacement and turning rebuild_rotation).
   const ModelConstants& c = m.constants;

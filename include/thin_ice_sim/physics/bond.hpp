@@ -74,7 +74,52 @@ struct BondConstants {
   double flexural_strength;     ///< sigma_f [Pa]
   double compressive_strength;  ///< sigma_comp [Pa]
   double compression_coupling;  ///< k of Eq. (13) [-]
+  // What the springs of Eqs. (11)-(12) are made of (bondRestOf).
+  double youngs_modulus;          ///< E [Pa], of k_n
+  double shear_modulus;           ///< G = E / (2 (1 + nu)) [Pa], of k_s
+  double vertical_shear_modulus;  ///< G_v = E_v / (2 (1 + nu)) [Pa], of k_v
+  double damping_ratio;           ///< zeta [-] of the three springs
 };
+
+/// The part of a bond's rest record that is its own geometry (BondRest without the springs,
+/// which follow from it): 64 B against BondRest's 112.
+struct BondShape {
+  Vec2 anchor_i;       ///< [m] edge midpoint relative to i's centroid, body frame of i
+  Vec2 anchor_j;       ///< [m] edge midpoint relative to j's centroid, body frame of j
+  Vec2 normal;         ///< unit, from i towards j, world frame at t = 0 (yaw 0)
+  double edge_length;  ///< L_e [m]
+  double distance;     ///< d_ij [m], centroid to centroid at t = 0
+};
+
+/// A bond's rest record from its shape and the masses of its two cells [kg]: the springs of
+/// Eqs. (11)-(12), k = modulus x h L_e / d (a bar of section h L_e and length d), and their
+/// damping 2 zeta sqrt(k m_red), m_red = m_i m_j / (m_i + m_j). The model's records are made
+/// here. The CUDA backend makes each again in every step from the 64 B shape rather than read
+/// the 112 B record: the same operations (products, quotients, square roots, no sums of
+/// products for a compiler to fuse), so the same bits.
+TIS_HD BondRest bondRestOf(const BondShape& s, double mass_i, double mass_j, const BondConstants& c) {
+  BondRest b;
+  b.anchor_i = s.anchor_i;
+  b.anchor_j = s.anchor_j;
+  b.normal = s.normal;
+  b.edge_length = s.edge_length;
+  b.distance = s.distance;
+  const double bar = c.thickness * s.edge_length / s.distance;  // section over length [m]
+  b.k_normal = c.youngs_modulus * bar;
+  b.k_shear = c.shear_modulus * bar;
+  b.k_vertical = c.vertical_shear_modulus * bar;
+  const double reduced_mass = mass_i * mass_j / (mass_i + mass_j);
+  const double two_zeta = 2.0 * c.damping_ratio;
+  b.damping_normal = two_zeta * sqrt(b.k_normal * reduced_mass);
+  b.damping_shear = two_zeta * sqrt(b.k_shear * reduced_mass);
+  b.damping_vertical = two_zeta * sqrt(b.k_vertical * reduced_mass);
+  return b;
+}
+
+/// The shape of a rest record.
+TIS_HD BondShape bondShapeOf(const BondRest& b) {
+  return {b.anchor_i, b.anchor_j, b.normal, b.edge_length, b.distance};
+}
 
 struct BondForce {
   Vec2 force_on_j;     ///< [N]; i gets the opposite
