@@ -277,7 +277,7 @@ class CudaBackend final : public Backend {
     bond_j_.upload(model.bond_j);
     std::vector<BondShape> shapes;
     shapes.reserve(model.bond_rest.size());
-    for (const BondRest& b : model.bond_rest) shapes.push_back(bondShapeOf(b));
+    for (const BondRest& b : model.bond_rest) shapes.push_back(b);  // the shape part
     bond_shape_.upload(shapes);
     Incidence bonds;
     bonds.build(n_, model.bond_i, model.bond_j);

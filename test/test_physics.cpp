@@ -379,8 +379,8 @@ TEST(Bond, ItsSpringsFollowFromItsShapeAndTheMassesOfItsCells) {
   EXPECT_NEAR(b.damping_normal, 979.7958971132712, 1e-12 * 980.0);
   EXPECT_NEAR(b.damping_shear, 607.6436202502, 1e-12 * 608.0);
   EXPECT_NEAR(b.damping_vertical, 271.7464881947030, 1e-12 * 272.0);
-  // The shape passes through unchanged, and is what bondShapeOf gives back.
-  const BondShape back = bondShapeOf(b);
+  // The shape passes through unchanged.
+  const BondShape& back = b;
   EXPECT_EQ(back.anchor_i.x, 0.12);
   EXPECT_EQ(back.anchor_j.y, -0.02);
   EXPECT_EQ(back.normal.y, 0.8);

@@ -35,11 +35,16 @@ long long forceBlock(const Model& model, const BondRestColumns& r, int first, in
   for (int t = 0; t < count; ++t) {
     const int b = first + t;
     const int i = bond_i[b], j = bond_j[b];
-    const BondRest rest = {{r.anchor_i_x[b], r.anchor_i_y[b]}, {r.anchor_j_x[b], r.anchor_j_y[b]},
-                           {r.normal_x[b], r.normal_y[b]},     r.edge_length[b],
-                           r.distance[b],                      r.k_normal[b],
-                           r.k_shear[b],                       r.k_vertical[b],
-                           r.damping_normal[b],                r.damping_shear[b],
+    const BondRest rest = {{{r.anchor_i_x[b], r.anchor_i_y[b]},
+                            {r.anchor_j_x[b], r.anchor_j_y[b]},
+                            {r.normal_x[b], r.normal_y[b]},
+                            r.edge_length[b],
+                            r.distance[b]},
+                           r.k_normal[b],
+                           r.k_shear[b],
+                           r.k_vertical[b],
+                           r.damping_normal[b],
+                           r.damping_shear[b],
                            r.damping_vertical[b]};
     const BondForce f = rmibBondForce(rest, bodyOf(motion[i], mass[i], inertia[i]), turn[i],
                                       bodyOf(motion[j], mass[j], inertia[j]), turn[j], c);

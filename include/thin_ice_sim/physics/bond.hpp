@@ -24,13 +24,18 @@
 
 namespace thin_ice {
 
-/// What a bond remembers from t = 0.
-struct BondRest {
+/// A bond's own geometry, fixed at t = 0.
+struct BondShape {
   Vec2 anchor_i;        ///< [m] edge midpoint relative to i's centroid, body frame of i
   Vec2 anchor_j;        ///< [m] edge midpoint relative to j's centroid, body frame of j
   Vec2 normal;          ///< unit, from i towards j, world frame at t = 0 (yaw 0)
   double edge_length;   ///< L_e [m]
   double distance;      ///< d_ij [m], centroid to centroid at t = 0
+};
+
+/// What a bond remembers from t = 0: its shape (64 B) and the springs that follow from it (48 B
+/// more; bondRestOf).
+struct BondRest : BondShape {
   double k_normal;      ///< k_n [N/m]
   double k_shear;       ///< k_s [N/m]
   double k_vertical;    ///< k_v [N/m]
@@ -81,16 +86,6 @@ struct BondConstants {
   double damping_ratio;           ///< zeta [-] of the three springs
 };
 
-/// The part of a bond's rest record that is its own geometry (BondRest without the springs,
-/// which follow from it): 64 B against BondRest's 112.
-struct BondShape {
-  Vec2 anchor_i;       ///< [m] edge midpoint relative to i's centroid, body frame of i
-  Vec2 anchor_j;       ///< [m] edge midpoint relative to j's centroid, body frame of j
-  Vec2 normal;         ///< unit, from i towards j, world frame at t = 0 (yaw 0)
-  double edge_length;  ///< L_e [m]
-  double distance;     ///< d_ij [m], centroid to centroid at t = 0
-};
-
 /// A bond's rest record from its shape and the masses of its two cells [kg]: the springs of
 /// Eqs. (11)-(12), k = modulus x h L_e / d (a bar of section h L_e and length d), and their
 /// damping 2 zeta sqrt(k m_red), m_red = m_i m_j / (m_i + m_j). The model's records are made
@@ -99,11 +94,7 @@ struct BondShape {
 /// products for a compiler to fuse), so the same bits.
 TIS_HD BondRest bondRestOf(const BondShape& s, double mass_i, double mass_j, const BondConstants& c) {
   BondRest b;
-  b.anchor_i = s.anchor_i;
-  b.anchor_j = s.anchor_j;
-  b.normal = s.normal;
-  b.edge_length = s.edge_length;
-  b.distance = s.distance;
+  static_cast<BondShape&>(b) = s;
   const double bar = c.thickness * s.edge_length / s.distance;  // section over length [m]
   b.k_normal = c.youngs_modulus * bar;
   b.k_shear = c.shear_modulus * bar;
@@ -116,10 +107,6 @@ TIS_HD BondRest bondRestOf(const BondShape& s, double mass_i, double mass_j, con
   return b;
 }
 
-/// The shape of a rest record.
-TIS_HD BondShape bondShapeOf(const BondRest& b) {
-  return {b.anchor_i, b.anchor_j, b.normal, b.edge_length, b.distance};
-}
 
 struct BondForce {
   Vec2 force_on_j;     ///< [N]; i gets the opposite
