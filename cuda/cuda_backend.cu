@@ -101,7 +101,7 @@ __global__ void placeCells(int n, const RunScalars* run, const CellMotion* motio
 
 // A bond's springs are made again in every step from its 64 B shape and the two masses it reads
 // anyway (bondRestOf: the CPU's records, bit for bit), rather than read from a 112 B record:
-// 144 B less per cell-step at 2.94 bonds per cell.
+// 141 B less per cell-step at 2.94 bonds per cell.
 __global__ void bondForces(int bonds, RunScalars* run, ModelConstants c, const int* bond_i, const int* bond_j,
                            const BondShape* shape, const CellMotion* motion, const double* mass, const double* inertia,
                            const Vec2* turn, unsigned char* state, PairLoad* load) {
