@@ -258,6 +258,31 @@ __global__ void finishStep(RunScalars* run, double time_step, int max_steps_betw
 
 // --- The backend ------------------------------------------------------------------------------
 
+static_assert(sizeof(BondShape) == 64, "bondForces reads 64 B per bond (docs/performance.md)");
+
+/// The bonds' shapes, from which bondForces makes their springs in every step. The device never
+/// sees the model's springs, so a model whose springs are not those of bondRestOf (edited after
+/// the build) is refused here rather than stepped otherwise than on the CPU.
+std::vector<BondShape> bondShapes(const Model& model) {
+  std::vector<BondShape> shapes;
+  shapes.reserve(model.bond_rest.size());
+  for (size_t b = 0; b < model.bond_rest.size(); ++b) {
+    const BondRest& rest = model.bond_rest[b];
+    const BondRest made = bondRestOf(rest, model.mass[model.bond_i[b]], model.mass[model.bond_j[b]],
+                                     model.constants.bond);
+    if (made.k_normal != rest.k_normal || made.k_shear != rest.k_shear || made.k_vertical != rest.k_vertical ||
+        made.damping_normal != rest.damping_normal || made.damping_shear != rest.damping_shear ||
+        made.damping_vertical != rest.damping_vertical) {
+      std::ostringstream msg;
+      msg << "CUDA backend: bond " << b << "'s springs are not those its shape, its cells' masses and the ice "
+          << "constants give (bondRestOf); the GPU makes them from those, so it would step another model";
+      throw std::invalid_argument(msg.str());
+    }
+    shapes.push_back(rest);  // the shape part
+  }
+  return shapes;
+}
+
 class CudaBackend final : public Backend {
  public:
   explicit CudaBackend(const Model& model)
@@ -275,10 +300,7 @@ class CudaBackend final : public Backend {
     radius_.upload(model.radius);
     bond_i_.upload(model.bond_i);
     bond_j_.upload(model.bond_j);
-    std::vector<BondShape> shapes;
-    shapes.reserve(model.bond_rest.size());
-    for (const BondRest& b : model.bond_rest) shapes.push_back(b);  // the shape part
-    bond_shape_.upload(shapes);
+    bond_shape_.upload(bondShapes(model));
     Incidence bonds;
     bonds.build(n_, model.bond_i, model.bond_j);
     bond_offsets_.upload(bonds.offsets);

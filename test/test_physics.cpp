@@ -379,6 +379,17 @@ TEST(Bond, ItsSpringsFollowFromItsShapeAndTheMassesOfItsCells) {
   EXPECT_NEAR(b.damping_normal, 979.7958971132712, 1e-12 * 980.0);
   EXPECT_NEAR(b.damping_shear, 607.6436202502, 1e-12 * 608.0);
   EXPECT_NEAR(b.damping_vertical, 271.7464881947030, 1e-12 * 272.0);
+  // Bit for bit what the model build computed inline before bondRestOf existed, in that order:
+  // the CUDA backend makes the springs anew in every step and must get the CPU's records.
+  const double bar = 0.05 * 0.2 / 0.25;
+  const double k_normal = 5e8 * bar, k_shear = (5e8 / 2.6) * bar, k_vertical = (1e8 / 2.6) * bar;
+  const double reduced_mass = 2.0 * 3.0 / (2.0 + 3.0), two_zeta = 2.0 * 0.1;
+  EXPECT_EQ(b.k_normal, k_normal);
+  EXPECT_EQ(b.k_shear, k_shear);
+  EXPECT_EQ(b.k_vertical, k_vertical);
+  EXPECT_EQ(b.damping_normal, two_zeta * std::sqrt(k_normal * reduced_mass));
+  EXPECT_EQ(b.damping_shear, two_zeta * std::sqrt(k_shear * reduced_mass));
+  EXPECT_EQ(b.damping_vertical, two_zeta * std::sqrt(k_vertical * reduced_mass));
   // The shape passes through unchanged.
   const BondShape& back = b;
   EXPECT_EQ(back.anchor_i.x, 0.12);

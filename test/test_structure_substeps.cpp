@@ -275,6 +275,13 @@ TEST(StructureSubsteps, ACellStepThatPlacesItsOwnPolygonMovesAsOneGivenThePlaced
     k.walls_enabled = k.bottom_enabled = walls_and_bottom;
     LoneCell placed = pentagon(0.02), own = pentagon(0.02);
     const double pusher_x = box[0] + 2e-4;  // 0.2 mm into the cell's back
+    {  // The first step hands the cell on to the sub-steps, which start from the placed polygon.
+      LoneCell probe = pentagon(0.02);
+      StructureContact s;
+      HeldForces held{};
+      double pusher_fx = 0.0;
+      ASSERT_TRUE(beginCellStep(0, k, probe.place(false), pusher_x, 0.02, probe.motion, s, pusher_fx, held));
+    }
     for (int s = 0; s < 40; ++s) {
       placed.step(k, true, pusher_x + 0.02 * s * kOuterStep, 0.02);
       own.step(k, false, pusher_x + 0.02 * s * kOuterStep, 0.02);

@@ -206,7 +206,12 @@ struct CellPolygon {
   const double* vertex_y;
   int count;
   const Vec2* placed;      ///< null until placed, where the backend keeps no world array
-  Vec2 own[kMaxPolygonVertices];
+  Vec2 own[kMaxPolygonVertices];  ///< read only once placed, so left uninitialised: zeroing it
+                                  ///< could cost the GPU 192 B of local stores per cell-step
+
+  TIS_HD CellPolygon(const CellMotion& pose_, const double* vertex_x_, const double* vertex_y_, int count_,
+                     const Vec2* placed_)
+      : pose(pose_), vertex_x(vertex_x_), vertex_y(vertex_y_), count(count_), placed(placed_) {}
 
   TIS_HD const Vec2* vertices() {
     if (placed == nullptr) {
@@ -221,8 +226,8 @@ struct CellPolygon {
 /// Cell k's CellPolygon at `pose` (its pose at the step's start).
 TIS_HD CellPolygon cellPolygonOf(const CellStepInputs& in, int k, const CellMotion& pose) {
   const size_t first = (size_t)k * kMaxPolygonVertices;
-  return {pose, in.vertex_x + first, in.vertex_y + first, in.vertex_count[k],
-          in.world == nullptr ? nullptr : in.world + first, {}};
+  return CellPolygon(pose, in.vertex_x + first, in.vertex_y + first, in.vertex_count[k],
+                     in.world == nullptr ? nullptr : in.world + first);
 }
 
 /// Forces of the structure face's panels first..last (Eq. 17) on a cell (world polygon `poly` of
@@ -303,15 +308,15 @@ struct HeldForces {
   double travel;      ///< [m] bound on how far any point of the cell moves in the step
 };
 
-/// Inlined like the rest. ptxas -v (nvcc 13, -arch=sm_90): the CUDA kernel that runs it
-/// (subcycleCells) takes 136 registers and a 1296 B stack frame, and stepCells, which no longer
-/// does, 150 and 1024 B (160 and 1296 B when stepCells ran the sub-steps itself).
+/// Inlined like the rest. ptxas -v (nvcc 13, -arch=sm_90, 2026-12-07): the CUDA kernel that runs
+/// it (subcycleCells) takes 136 registers and a 1296 B stack frame, and stepCells, which no
+/// longer does, 154 and 1376 B (160 and 1296 B when stepCells ran the sub-steps itself).
 /// n sub-steps of dt/n of one cell that can reach the structure (see the file comment): the
 /// face's force anew in each, the slow forces (fx, fy, fz, tz) held. `start_polygon` is the
 /// cell's world polygon at the step's start (the backend's placed one, or placed for it). `s`
-/// gets the mean load of
-/// each panel slot over the sub-steps and its force-weighted mean point (the cell moves
-/// micrometres in one step, so the moment of the mean is the mean moment to that accuracy).
+/// gets the mean load of each panel slot over the sub-steps and its force-weighted mean point
+/// (the cell moves micrometres in one step, so the moment of the mean is the mean moment to that
+/// accuracy).
 TIS_HD void subcycleStructureContact(int k, const ModelConstants& c, const CellStepInputs& in,
                                      const Vec2* start_polygon, const HeldForces& held, CellMotion& motion,
                                      StructureContact& s) {
