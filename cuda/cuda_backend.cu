@@ -206,7 +206,7 @@ __global__ void stepCells(int n, RunScalars* run, ModelConstants c, CellStepInpu
     const int slot = atomicAdd(&run->subcycled, 1);
     subcycled_cells[slot] = k;
     held[slot] = h;
-    double box[4];  // placeCells' already
+    double box[4];  // placeCell computes it too; placeCells has already written the same box
     placeCell(motion[k], in.vertex_x + (size_t)k * kV, in.vertex_y + (size_t)k * kV, in.vertex_count[k],
               start_polygons + (size_t)slot * kV, box);
     return;

@@ -97,7 +97,8 @@ struct CellStepInputs {
   const double* vertex_x;             ///< (cells x kMaxPolygonVertices) body-frame vertices [m]
   const double* vertex_y;
   /// (cells x kMaxPolygonVertices) world vertices [m] at the step's start, or null: the step
-  /// places a cell's polygon itself where it needs one (CellPolygon)
+  /// places a cell's polygon itself where it needs one (CellPolygon), and the caller hands the
+  /// sub-steps theirs (subcycleStructureContact's start_polygon)
   const Vec2* world;
   const double* box;                  ///< (cells x 4) x0 x1 y0 y1 [m]
   const int* bond_offsets;            ///< (cells + 1)
