@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""scripts/study plot_side_view draws a run's last snapshot (or a named one) and refuses bad input with
+"""scripts/study plot_side_view draws a run's last snapshot (or a named one), with the rubble profiles
+that `thin_ice probe profiles` wrote of it over the cells when asked, and refuses bad input with
 one message naming it.
 
     test_plot_side_view.py THIN_ICE SOURCE_DIR   (THIN_ICE: the thin_ice program)
@@ -25,6 +26,19 @@ def main():
             failures.append(f"{out} is {os.path.getsize(out)} bytes")
         if "L = " not in done.stdout or "cells drawn" not in done.stdout:
             failures.append(f"unexpected report: {done.stdout.strip()!r}")
+        # The same snapshot with its rubble profiles drawn over it (the file thin_ice probe profiles writes).
+        profiles = os.path.join(tmp, "profiles.csv")
+        run_or_fail([thin_ice, "probe", "profiles", run, "--out", profiles], "probe profiles")
+        with_profiles = os.path.join(tmp, "side_profiles.png")
+        run_or_fail(script + [run, with_profiles, "--profiles", profiles], "plot_side_view --profiles")
+        if not os.path.getsize(with_profiles) > 10000:
+            failures.append(f"{with_profiles} is {os.path.getsize(with_profiles)} bytes")
+        not_profiles = os.path.join(tmp, "not_profiles.csv")
+        with open(not_profiles, "w") as f:
+            f.write("x,y\n1,2\n")
+        bad_row = os.path.join(tmp, "bad_row.csv")
+        with open(bad_row, "w") as f:
+            f.write("profile,coordinate_m,value_m\nside,24.1,0.2\nfront,1,2\n")
         # A run folder without snapshots (docs/validation/ keeps none), and outputs that cannot be written.
         bare = os.path.join(tmp, "bare")
         os.makedirs(bare)
@@ -32,6 +46,9 @@ def main():
             g.write(f.read())
         for args, needle in (([run, out, "--snapshot", "cells_999999.csv"], "cells_999999.csv"),
                              ([run, out, "--reach", "-1"], "--reach -1"),
+                             ([run, out, "--profiles", not_profiles], "header"),
+                             ([run, out, "--profiles", bad_row], "line 3"),
+                             ([run, out, "--profiles", os.path.join(tmp, "none.csv")], "none.csv"),
                              ([bare, out], "no snapshots/index.csv"),
                              ([os.path.join(tmp, "none"), out], "cannot read summary.json"),
                              ([run, os.path.join(tmp, "no_folder", "side.png")], "no_folder"),
@@ -41,7 +58,7 @@ def main():
                 failures.append(f"{args}: {problem}")
     if failures:
         sys.exit("FAIL: " + "; ".join(failures))
-    print("OK: plot_side_view draws the last snapshot and names bad input in one line")
+    print("OK: plot_side_view draws the last snapshot, with and without its profiles, and names bad input in one line")
 
 
 if __name__ == "__main__":

@@ -5,13 +5,19 @@ Older snapshots have no piece sizes (no piece_cells column): there blue is any b
 floe. The side view shows what the rubble profiles (above the water only) do not: ice under the
 waterline and under the incoming sheet.
 
-usage: scripts/study plot_side_view RUN_DIR OUT_PNG [--snapshot FILE] [--reach M]
+usage: scripts/study plot_side_view RUN_DIR OUT_PNG [--snapshot FILE] [--reach M] [--profiles CSV]
   RUN_DIR     an output folder of `thin_ice run` with summary.json and snapshots/ (--snapshots N)
   --snapshot  a file in RUN_DIR/snapshots/ (default: the last one in snapshots/index.csv)
   --reach     how far in front of the toe to draw [m] (default 3.5)
+  --profiles  the rubble pile's profiles of the same snapshot (`thin_ice probe profiles RUN_DIR
+              --snapshot FILE` writes them), drawn over the cells: the side profile (the highest
+              pile cell's top above the water in each 0.1 m of x) and the top profile (how far in
+              front of the toe the pile reaches in each 0.1 m of y), what a camera beside and
+              above the basin sees (paper Section 5.1.2, Figs. 13 and 15)
 """
-import functools
 import argparse
+import csv
+import functools
 import json
 import math
 import os
@@ -50,16 +56,40 @@ def snapshot_entry(run, name=None):
     return rows[-1][run_record.FILE], float(rows[-1][run_record.PUSHED_LENGTH])
 
 
+def read_profiles(path):
+    """(side [(x, height)], top [(y, extent)]) [m] of a profiles.csv (profile,coordinate_m,value_m)."""
+    side, top = [], []
+    try:
+        with open(path, newline="") as f:
+            reader = csv.reader(f)
+            if next(reader, None) != ["profile", "coordinate_m", "value_m"]:
+                fail(f"--profiles {path}: its header is not profile,coordinate_m,value_m; allowed: the file "
+                     "`thin_ice probe profiles` writes")
+            for number, row in enumerate(reader, 2):
+                try:
+                    kind, coordinate, value = row[0], float(row[1]), float(row[2])
+                except (IndexError, ValueError):
+                    kind = None
+                if kind not in ("side", "top"):
+                    fail(f"--profiles {path}: line {number} '{','.join(row)}'; allowed: side|top,coordinate,value")
+                (side if kind == "side" else top).append((coordinate, value))
+    except OSError as e:
+        fail(f"--profiles {path}: cannot read it ({e.strerror}); allowed: the file `thin_ice probe profiles` writes")
+    return side, top
+
+
 def main(argv):
     p = argparse.ArgumentParser(prog=PROG, description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("run")
     p.add_argument("out")
     p.add_argument("--snapshot")
     p.add_argument("--reach", type=float, default=3.5)
+    p.add_argument("--profiles")
     a = p.parse_args(argv)
     if not a.reach > 0:
         fail(f"--reach {a.reach}; allowed: a length > 0 [m]")
     check_png_path(PROG, "OUT_PNG", a.out)
+    profiles = read_profiles(a.profiles) if a.profiles else None
     summary_path = run_record.summary_path(a.run)
     try:
         summary = run_record.require_summary(a.run)
@@ -106,6 +136,18 @@ def main(argv):
     side.plot([foot, structure["height_m"] / math.tan(angle)], [-depth, structure["height_m"]], "k-", lw=2,
               label=f"structure face ({structure['angle_deg']:g} deg)")
     side.axhline(0.0, color="tab:cyan", lw=0.8, label="waterline")
+    if profiles:
+        # A bin where no pile is seen holds 0: drawn as a gap, not as a profile at the waterline.
+        side_profile, top_profile = profiles
+        side.step([x - toe for x, _ in side_profile], [z if z > 0 else math.nan for _, z in side_profile], "k--",
+                  where="mid", lw=1, label="the pile's side profile above the water (--profiles)")
+        # The top profile as an outline: each y bin's reach held over the bin's width.
+        half_bin = 0.5 * (top_profile[1][0] - top_profile[0][0]) if len(top_profile) > 1 else 0.05
+        outline_x = [-e if e > 0 else math.nan for _, e in top_profile for _ in (0, 1)]
+        outline_y = [y + sign * half_bin for y, _ in top_profile for sign in (-1, 1)]
+        top.plot(outline_x, outline_y, "k-", lw=0.8,
+                 label="the pile's top profile: its reach in front of the toe (--profiles)")
+        top.legend(fontsize=8, loc="upper left")
     if bottom:
         side.axhline(-depth, color="tab:brown", lw=0.8,
                      label=f"false bottom ({bottom['distance_from_structure_m']:g} m and more in front of the toe)")
