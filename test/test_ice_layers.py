@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """scripts/study ice_layers counts the cells under and over the sheet's level in a hand-made run folder
 whose answer is worked out below (the sheet told apart from the broken ice by its bonded piece), applies the run's --set overrides, tables and draws two runs
-together, and names bad input in one line.
+together, counts the broken ice in slices across the width, and names bad input in one line.
 
     test_ice_layers.py SOURCE_DIR
 """
@@ -38,14 +38,24 @@ EXPECTED_ROW = "| 0.500 | 3 | 1 | 2 | 0 | 2 | 3 | 2.50 | 2.00 |"
 EXPECTED_ROW_THICK = "| 0.500 | 1 | - | 1 | - | 2 | - | 2.50 | - |"
 
 
-def make_run(folder, overrides, with_pieces=True):
+# --slice-width over a structure 3 m wide (y from -1.5 to +1.5 m): the cells' y [m], in CELLS' order.
+# Broken ice below: cell 1 (y -1.2) and cell 2 (+0.3); above: cells 3 (+1.4) and 4 (+1.5, on the
+# edge: the last slice); the sheet's cells (0, 5 and 6, pressed down) are not broken ice. In 1 m
+# slices: 1/0, 1/0, 0/2; in 2 m slices (the second only 1 m wide): 2/0, 0/2.
+SLICE_YS = [0.0, -1.2, 0.3, 1.4, 1.5, 0.0, -1.0]
+EXPECTED_SLICES = {"1": "| 0.500 | 1 / 0 | 1 / 0 | 0 / 2 |", "2": "| 0.500 | 2 / 0 | 0 / 2 |"}
+EXPECTED_SLICE_HEADERS = {"1": "| L [m] | y -1.50 to -0.50 m | y -0.50 to +0.50 m | y +0.50 to +1.50 m |",
+                          "2": "| L [m] | y -1.50 to +0.50 m | y +0.50 to +1.50 m |"}
+
+
+def make_run(folder, overrides, with_pieces=True, ys=None, width=None):
     os.makedirs(os.path.join(folder, "snapshots"))
     scenario = os.path.join(folder, "scenario.yaml")
     with open(scenario, "w") as f:
         f.write(SCENARIO)
     with open(os.path.join(folder, "summary.json"), "w") as f:
         json.dump({"scenario": {"name": "hand", "file": scenario, "overrides": overrides},
-                   "structure": {"toe_x_m": TOE_X}}, f)
+                   "structure": dict({"toe_x_m": TOE_X}, **({"width_m": width} if width else {}))}, f)
     with open(os.path.join(folder, "snapshots", "index.csv"), "w") as f:
         f.write("file,time_s,pushed_length_m\ncells_000010.csv,10,0.5\n")
     with open(os.path.join(folder, "load_bins.csv"), "w") as f:  # the kept record: two bins of 5 s
@@ -57,7 +67,8 @@ def make_run(folder, overrides, with_pieces=True):
         w.writerow(["cell", "x_m", "y_m", "z_m", "yaw_rad", "in_intact_sheet"] + (["piece_cells"] if with_pieces else [])
                    + ["polygon_xy_m"])
         for k, (x, z, bonded, piece) in enumerate(CELLS):
-            w.writerow([k, x, 0.0, z, 0.0, 1 if bonded else 0] + ([piece] if with_pieces else []) + [""])
+            y = ys[k] if ys else 0.0
+            w.writerow([k, x, y, z, 0.0, 1 if bonded else 0] + ([piece] if with_pieces else []) + [""])
 
 
 def run(script, args):
@@ -113,6 +124,18 @@ def main():
         problem = refusal_problem(script + [os.path.join(tmp, "plain"), "--earlier", earlier_csv], "--earlier")
         if problem:
             failures.append(f"--earlier with other columns: {problem}")
+        # Where across the width the broken ice lies, in slices.
+        wide = os.path.join(tmp, "wide")
+        make_run(wide, [], ys=SLICE_YS, width=3.0)
+        for width, row in EXPECTED_SLICES.items():
+            done = run(script, [wide, "--slice-width", width])
+            lines = done.stdout.splitlines()
+            if done.returncode != 0 or row not in lines or EXPECTED_SLICE_HEADERS[width] not in lines:
+                failures.append(f"--slice-width {width}: exit status {done.returncode}, expected {row!r} under "
+                                f"{EXPECTED_SLICE_HEADERS[width]!r} in {done.stdout!r} (stderr {done.stderr.strip()!r})")
+        problem = refusal_problem(script + [wide, "--slice-width", "0"], "--slice-width 0")
+        if problem:
+            failures.append(f"--slice-width 0: {problem}")
         bad = os.path.join(tmp, "bad")
         make_run(bad, ["water.density=800"])  # lighter than the ice: nothing floats
         for args, needle in (([os.path.join(tmp, "none")], "not a finished run"),

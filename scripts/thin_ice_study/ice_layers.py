@@ -6,7 +6,7 @@ below (above) the level at which a cell floats at rest, z_rest = h/2 - (rho_i / 
 intact bonds (snapshot column piece_cells; older snapshots lack it); every other cell is broken
 ice. The side view (scripts/study plot_side_view) shows one snapshot; this gives the history as numbers.
 
-usage: scripts/study ice_layers RUN_DIR... [--earlier CSV] [--csv OUT] [--plot OUT_PNG]
+usage: scripts/study ice_layers RUN_DIR... [--earlier CSV] [--csv OUT] [--plot OUT_PNG] [--slice-width W]
   RUN_DIR  an output folder of `thin_ice run` with summary.json and snapshots/ (--snapshots N); h, rho_i
            and rho_w come from its scenario file (path in summary.json, relative to the repository
            root) with the run's --set overrides applied
@@ -17,6 +17,10 @@ usage: scripts/study ice_layers RUN_DIR... [--earlier CSV] [--csv OUT] [--plot O
   --plot   also draw, for every run, the mean horizontal load F_cal per 0.1 m of pushed length
            (from its loads.csv) above the counts of broken ice below and above the sheet's level
            and of sheet cells pressed down
+  --slice-width  also count, in every snapshot, the broken ice below and above the level in
+           slices W [m] wide across the structure's width (from y = -width/2; the last slice may
+           be narrower): where across the width the ice goes, say beside the walls or away from
+           them, on the slices a strip of width W would cut from the full width
 
 Columns: pushed length L [m]; cells below the level, and how many of them are the sheet's; the same
 above; free blocks (cells with no bond left); cells in the sheet; the farthest a broken cell below
@@ -28,6 +32,7 @@ known, and the farthest of all cells below.
 import functools
 import argparse
 import csv
+import math
 import os
 
 from . import run_record
@@ -47,17 +52,26 @@ EARLIER_COLUMNS = COLUMNS[:-1]
 fail = functools.partial(refuse, PROG)  # bad input: one line, exit status 2
 
 
-def layers(cells_csv, h, z_rest, toe_x):
-    """{column: value} of one snapshot; the sheet's columns are None when it has no piece_cells."""
+def layers(cells_csv, h, z_rest, toe_x, slices=None):
+    """{column: value} of one snapshot; the sheet's columns are None when it has no piece_cells.
+    With `slices` (y_min [m], slice width [m], count), also "slices": per slice, [broken cells below,
+    broken cells above] (every cell off the level where the sheet is not known)."""
     cells = run_record.read_cells_file(cells_csv)
     size = sheet_size(cells)
     known = size is not None
     counts = {"cells_below": 0, "sheet_cells_below": 0, "cells_above": 0, "sheet_cells_above": 0,
               "free_blocks": 0, "sheet_cells": 0, "farthest_broken_below_from_toe_m": 0.0,
               "sheet_nearest_to_toe_m": None}
+    if slices:
+        counts["slices"] = [[0, 0] for _ in range(slices[2])]
     for c in cells:
         z = float(c[run_record.Z])
         in_sheet = known and int(c[run_record.PIECE_CELLS]) == size
+        if slices and not in_sheet and abs(z - z_rest) > 0.5 * h:
+            y = float(c[run_record.Y])
+            k = min(int((y - slices[0]) // slices[1]), slices[2] - 1)  # a cell at y = +width/2: the last slice
+            if slices[0] <= y <= -slices[0]:
+                counts["slices"][k][z > z_rest] += 1
         counts["sheet_cells"] += in_sheet
         if in_sheet:
             gap = toe_x - float(c[run_record.X])
@@ -79,8 +93,15 @@ def layers(cells_csv, h, z_rest, toe_x):
     return counts
 
 
-def run_table(run):
-    """(summary, rows) of one run: per snapshot, {column: value} with its pushed length."""
+def slice_bounds(summary, slice_width):
+    """(y_min [m], slice width [m], count) of slices `slice_width` wide across the structure."""
+    width = summary[run_record.STRUCTURE]["width_m"]
+    return -0.5 * width, slice_width, max(1, math.ceil(width / slice_width - 1e-9))
+
+
+def run_table(run, slice_width=None):
+    """(summary, rows) of one run: per snapshot, {column: value} with its pushed length (and, with
+    `slice_width`, the broken ice below and above the level per slice across the width)."""
     try:
         summary = run_record.read_summary(run)
         index = run_record.read_snapshot_index(run)
@@ -95,9 +116,10 @@ def run_table(run):
     except ValueError as e:
         fail(str(e))
     toe_x = summary[run_record.STRUCTURE]["toe_x_m"]
+    slices = slice_bounds(summary, slice_width) if slice_width else None
     rows = []
     for e in index:
-        row = layers(run_record.snapshot_path(run, e[run_record.FILE]), h, z_rest, toe_x)
+        row = layers(run_record.snapshot_path(run, e[run_record.FILE]), h, z_rest, toe_x, slices)
         row["pushed_length_m"] = float(e[run_record.PUSHED_LENGTH])
         rows.append(row)
     show = lambda v: "-" if v is None else str(v)  # noqa: E731
@@ -111,6 +133,16 @@ def run_table(run):
         print(f"| {r['pushed_length_m']:.3f} | {r['cells_below']} | {show(r['sheet_cells_below'])} | {r['cells_above']} "
               f"| {show(r['sheet_cells_above'])} | {r['free_blocks']} | {show(r['sheet_cells'])} "
               f"| {r['farthest_broken_below_from_toe_m']:.2f} | {metres(r['sheet_nearest_to_toe_m'])} |")
+    if slices:
+        y_min, step, count = slices
+        edges = [(y_min + k * step, min(y_min + (k + 1) * step, -y_min)) for k in range(count)]
+        print(f"ice_layers: {run}: broken ice below / above the level, in slices {step:g} m wide across the width "
+              f"(every cell off the level where the sheet is not known)")
+        print("| L [m] | " + " | ".join(f"y {a:+.2f} to {b:+.2f} m" for a, b in edges) + " |")
+        print("|---:|" + "---:|" * count)
+        for r in rows:
+            print(f"| {r['pushed_length_m']:.3f} | " + " | ".join(f"{below} / {above}" for below, above in r["slices"])
+                  + " |")
     return summary, rows
 
 
@@ -217,13 +249,16 @@ def main(argv):
     p.add_argument("--earlier")
     p.add_argument("--csv")
     p.add_argument("--plot")
+    p.add_argument("--slice-width", type=float)
     a = p.parse_args(argv)
+    if a.slice_width is not None and not (math.isfinite(a.slice_width) and a.slice_width > 0):
+        fail(f"--slice-width {a.slice_width:g}; allowed: a width > 0 [m]")
     if a.plot:
         check_png_path(PROG, "--plot", a.plot)
     earlier = read_earlier(a.earlier) if a.earlier else {}
     tables = []
     for run in a.runs:
-        summary, rows = run_table(run)
+        summary, rows = run_table(run, a.slice_width)
         tables.append((run, summary, with_earlier(rows, earlier.get(os.path.basename(os.path.normpath(run)), []))))
     if a.csv:
         with open(a.csv + ".new", "w", newline="") as f:
