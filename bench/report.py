@@ -9,6 +9,7 @@ one run directory (every figure in the report comes from that one run on one mac
   tim_dem/summary.json  `thin_ice run` on the same sheet for the same simulated time
   rtf_<ID>/summary.json `thin_ice run` of each validation scenario (real-time factor)
   machine.json        machine, date, commands
+  busy_threads.csv    bench/busy_threads: the quick run beside a busy loop per core, by thread count and wait policy
 
   report.py --run DIR --out DIR
 """
@@ -360,6 +361,39 @@ def pile_against_reference(run, lines):
     lines += ["", f"Median: **{statistics.median(ratios):.2f} times faster** than {reference[0]['commit']}.", ""]
 
 
+def busy_threads_section(run, lines):
+    """The quick run on a machine whose every core is taken (bench/busy_threads), per thread count and
+    OpenMP wait policy: the median wall time of the turns and their range, and how many ran out of time."""
+    path = os.path.join(run, "busy_threads.csv")
+    if not os.path.exists(path):
+        return
+    with open(path) as f:
+        rows = list(csv.DictReader(f))
+    cases = {}
+    for r in rows:
+        cases.setdefault((int(r["threads"]), r["wait_policy"]), []).append(r)
+    if not cases:
+        fail(f"{path}: no rows; allowed: the file bench/busy_threads writes")
+    single = cases.get((1, "passive"))
+    single_median = statistics.median(float(r["wall_s"]) for r in single) if single else None
+    lines += ["## Threads on a busy machine (CPU)", "",
+              "`bench/busy_threads`: the quick scenario (about 75 cells) for 1 s of simulated time (0.2 s with --quick) while a busy loop",
+              "per core, at the same priority, keeps every core taken; the cases in turn. Threads 0 is the default",
+              "(`numerics.threads: 0`: one thread below 2000 cells, all cores above). `thin_ice` sets the passive",
+              "wait policy (a waiting thread sleeps) unless the environment names one; active is libgomp's own",
+              "default (a waiting thread spins), named here through OMP_WAIT_POLICY.", "",
+              "| threads | wait policy | runs | wall time, median [s] | range [s] | against one thread | stopped at the limit |",
+              "|---:|---|---:|---:|---:|---:|---:|"]
+    for (threads, policy), rs in sorted(cases.items(), key=lambda kv: (kv[0][0], kv[0][1] != "passive")):
+        walls = [float(r["wall_s"]) for r in rs]
+        median = statistics.median(walls)
+        against = f"{median / single_median:.2f}" if single_median else "-"
+        stopped = sum(r["exit_status"] == "124" for r in rs)
+        lines.append(f"| {threads}{' (default)' if threads == 0 else ''} | {policy} | {len(rs)} | {median:.2f} | "
+                     f"{min(walls):.2f}-{max(walls):.2f} | {against} | {stopped} |")
+    lines.append("")
+
+
 def fail(message):
     print(f"bench/report.py: {message}", file=sys.stderr)
     sys.exit(2)
@@ -389,6 +423,7 @@ def main():
     dem_section(a.run, a.out, lines)
     rtf_section(a.run, lines)
     pile_section(a.run, lines)
+    busy_threads_section(a.run, lines)
     # The GPU figures come from the committed device runs (a GPU is lent to some sessions only).
     lines += [""] + device_results.device_section(os.path.dirname(os.path.abspath(__file__))) + [""]
     path = os.path.join(a.out, "RESULTS.md")
