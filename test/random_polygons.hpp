@@ -39,5 +39,26 @@ inline std::vector<Vec2> randomConvexPolygon(std::mt19937_64& rng, int count, Ve
   return polygon;
 }
 
+/// The polygon pairs that PolygonClipGpu.MatchesTheCpu hands the GPU clip: 20000 pairs of 3-12
+/// vertices near (12, -3) m, the second moved by up to 0.4 m, so that some overlap and some do not.
+/// Its CPU half (test_polygon_clip: PolygonClip.TheGpuTestsPairsAreAMeaningfulCpuReference) checks
+/// the CPU clip on the same pairs against exact arithmetic, without a GPU.
+struct PolygonPair {
+  std::vector<Vec2> first, second;
+};
+
+inline std::vector<PolygonPair> gpuClipTestPairs() {
+  std::mt19937_64 rng(77);
+  std::uniform_real_distribution<double> offset(-0.4, 0.4);
+  std::vector<PolygonPair> pairs;
+  for (int k = 0; k < 20000; ++k) {
+    PolygonPair pair;
+    pair.first = randomConvexPolygon(rng, 3 + k % 10, {12.0, -3.0}, 0.3, 0.2);
+    pair.second = randomConvexPolygon(rng, 3 + (k / 10) % 10, {12.0 + offset(rng), -3.0 + offset(rng)}, 0.25, 0.3);
+    pairs.push_back(pair);
+  }
+  return pairs;
+}
+
 }  // namespace testing
 }  // namespace thin_ice

@@ -1,7 +1,8 @@
 // The polygon intersection kernel against the CPU call of the same inline function.
 #include <gtest/gtest.h>
 
-#include <random>
+#include <algorithm>
+#include <vector>
 
 #include "device_info.cuh"
 #include "polygon_clip_gpu.cuh"
@@ -16,18 +17,15 @@ constexpr double kTolDeviceArea = 1e-8;  // relative to the larger polygon area
 
 TEST(PolygonClipGpu, MatchesTheCpu) {
   if (cuda::deviceCount() == 0) GTEST_SKIP() << "no CUDA device on this machine: GPU test skipped";
-  std::mt19937_64 rng(77);
-  std::uniform_real_distribution<double> offset(-0.4, 0.4);
+  // The pairs' CPU half (the CPU clip on them against exact arithmetic) is
+  // PolygonClip.TheGpuTestsPairsAreAMeaningfulCpuReference, which runs without a GPU.
   std::vector<cuda::PackedPolygon> first, second;
-  for (int k = 0; k < 20000; ++k) {
-    const auto a = testing::randomConvexPolygon(rng, 3 + k % 10, {12.0, -3.0}, 0.3, 0.2);
-    const auto b = testing::randomConvexPolygon(rng, 3 + (k / 10) % 10,
-                                                {12.0 + offset(rng), -3.0 + offset(rng)}, 0.25, 0.3);
+  for (const testing::PolygonPair& pair : testing::gpuClipTestPairs()) {
     cuda::PackedPolygon pa{}, pb{};
-    pa.count = static_cast<int>(a.size());
-    pb.count = static_cast<int>(b.size());
-    std::copy(a.begin(), a.end(), pa.vertices);
-    std::copy(b.begin(), b.end(), pb.vertices);
+    pa.count = static_cast<int>(pair.first.size());
+    pb.count = static_cast<int>(pair.second.size());
+    std::copy(pair.first.begin(), pair.first.end(), pa.vertices);
+    std::copy(pair.second.begin(), pair.second.end(), pb.vertices);
     first.push_back(pa);
     second.push_back(pb);
   }
