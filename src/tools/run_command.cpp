@@ -65,6 +65,7 @@
 #include "thin_ice_sim/study/run_directory.hpp"
 #include "thin_ice_sim/study/run_record.hpp"
 #include "thin_ice_sim/study/run_report.hpp"
+#include "thin_ice_sim/study/stall_watch.hpp"
 #include "thin_ice_sim/scenario.hpp"
 #include "thin_ice_sim/sheet_io.hpp"
 #include "thin_ice_sim/simulation.hpp"
@@ -122,7 +123,27 @@ struct RunResult {
   int interrupted_by = 0;            // the signal that stopped the run early, 0 if none
 };
 
-RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& cont) {
+/// The stall watch's line on stderr: what the run was doing, for how long nothing moved, where it
+/// last was, and whether a stop request waits for the step to return (it is acted on after a row).
+void reportStall(const thin_ice::StallReport& r) {
+  std::string where = r.moved_before ? "; the last row: t = " + jsonNumber(r.last_time) + " s, L = " +
+                                           jsonNumber(r.last_length) + " m"
+                                     : "; no row finished yet";
+  const int stop = thin_ice_tools::stopSignal();
+  if (stop != 0) {
+    timespec now{};
+    clock_gettime(CLOCK_MONOTONIC, &now);
+    const long long ago_ns = static_cast<long long>(now.tv_sec) * 1000000000LL + now.tv_nsec -
+                             thin_ice_tools::stop_detail::g_first_stop_ns.load();
+    where += "; stop signal " + std::to_string(stop) + " came " + thin_ice_tools::formatDuration(1e-9 * ago_ns) +
+             " ago and is acted on when the step returns";
+  }
+  std::fprintf(stderr, "%sthin_ice run: nothing has moved for %s while %s%s\n", ::isatty(STDERR_FILENO) ? "\n" : "",
+               thin_ice_tools::formatDuration(r.silent_seconds).c_str(), r.phase.c_str(), where.c_str());
+}
+
+RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& cont, thin_ice::StallWatch& watch) {
+  watch.phase("stepping");
   RunResult r;
   r.bins = thin_ice::LoadBinner(cont.bins);
   r.first_failure_length = cont.first_failure_length;
@@ -201,6 +222,7 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
       break;
     }
     r.last = sim.loads();
+    watch.moved(r.last.time, r.last.pushed_length);
     csv << loadsRow(r.last, panels) << std::flush;
     r.bins.add(r.last);
     if (std::isinf(r.first_failure_length) && r.last.broken_bonds > 0) r.first_failure_length = r.last.pushed_length;
@@ -217,6 +239,7 @@ RunResult runSimulation(Simulation& sim, const Options& o, const Continuation& c
                  r.interrupted_by, sim.time(), sim.pushedLength());
   }
   r.wall = std::chrono::duration<double>(Clock::now() - start).count();
+  watch.phase("writing the results");
   csv.close();
   // A resumed segment that went wrong leaves the run as it was: its rows go to a file of their own.
   const std::string kept = cont.active && !r.error.empty() ? o.out + "/unhealthy_segment.csv" : csv_path;
@@ -576,9 +599,12 @@ int thin_ice::cli::runCommand(int argc, char** argv) {
   Options options;
   Continuation continuation;
   std::unique_ptr<Simulation> sim;
+  std::unique_ptr<thin_ice::StallWatch> watch;  // from the end of the command line's parsing
   try {
     options = thin_ice_tools::parseOptions(argc, argv);
     if (options.help) return std::printf("%s", kUsage) < 0;
+    watch = std::make_unique<thin_ice::StallWatch>(
+        options.stall_seconds, "setting up (the scenario, the model, the backend, the checkpoint)", reportStall);
     sim = prepare(options, continuation);
   } catch (const UsageError& e) {
     std::cerr << "thin_ice run: " << e.what() << "\n" << kUsage;
@@ -595,7 +621,7 @@ int thin_ice::cli::runCommand(int argc, char** argv) {
     std::filesystem::create_directories(options.out +
                                         (options.snapshots > 0 ? std::string("/") + thin_ice::run_record::kSnapshotDir : ""));
     thin_ice_tools::stopOnSigintAndSigterm();
-    const RunResult result = runSimulation(*sim, options, continuation);
+    const RunResult result = runSimulation(*sim, options, continuation, *watch);
     if (continuation.active && !result.error.empty()) {
       std::fprintf(stderr, "thin_ice run: the resumed segment became unhealthy; %s is left as it was (its rows are in "
                    "unhealthy_segment.csv there)\n", options.out.c_str());
