@@ -38,9 +38,23 @@ def write_run(folder, width, alpha, length, steady, mean, peak, slope, raw, expe
             w.writerow([k, 20.0 * end, round(end, 9), 0.7, 70, alpha * raw, alpha * raw, alpha * raw, 0.0, 0.0, 0, 0])
 
 
+def profile_target_lines(root, targets, plot, experiment):
+    """The targets' line on S-1's rubble profile: (case, line) with S-1 strips at 12 m, then one at
+    16.2 m, then the same with the picture in the runs folder."""
+    def profile_line():
+        return next(line for line in targets(root) if line.startswith("- S-1's rubble profile"))
+    write_run(os.path.join(root, "strips", "S-1-s1"), 2.0, 0.63, 12.0, False, 1000.0, 2000.0, 0.0, 1000.0, experiment)
+    lines = [("at 12 m", profile_line())]
+    write_run(os.path.join(root, "strips", "S-1-s2"), 2.0, 0.63, 16.2, False, 1000.0, 2000.0, 0.0, 1000.0, experiment)
+    lines.append(("at 16.2 m, no picture", profile_line()))
+    open(os.path.join(root, plot), "wb").close()
+    lines.append(("at 16.2 m, with the picture", profile_line()))
+    return lines
+
+
 def main():
     sys.path.insert(0, os.path.join(sys.argv[1], "scripts"))
-    from thin_ice_study.phase2_table import phase2_table
+    from thin_ice_study.phase2_table import PROFILE_PLOT, phase2_table, targets
     strip_experiment = {"width_scale": 0.2, "steady_mean_N": 1720.0, "peak_N": 3158.0}  # W-3 x 0.2
     with tempfile.TemporaryDirectory() as root:
         # Seed 1, recorded with alpha = 1: alpha F per metre = 0.63 * 1600 / 2 = 504 N/m against 860
@@ -58,6 +72,7 @@ def main():
         # A folder that is not a run of the series is left out.
         os.makedirs(os.path.join(root, "strips", "W-3-s1-old"))
         text = "\n".join(phase2_table(root))
+        profile_lines = profile_target_lines(root, targets, PROFILE_PLOT, strip_experiment)
     expected = [
         "| W-3 | strip, seed 1 | 6.00 (21.6) | 4.00-6.00 | 504 (860) | -41.4 % | missed | 800 "
         "| 945 (1579) at 5.00 m | -40.2 % | missed | 315 (150) | +110.0 % |",
@@ -73,6 +88,13 @@ def main():
     missing = [line for line in expected if line not in text.splitlines()]
     if missing or "W-3-s1-old" in text:
         sys.exit("FAIL: missing lines " + repr(missing) + " in:\n" + text)
+    # S-1's profile at 16 m: not yet with the longest S-1 run at 12.00 m; at 16.20 m, not drawn until
+    # the picture is in the runs folder, then drawn.
+    for (case, line), needle in zip(profile_lines, ("not yet (the longest S-1 run has reached 12.00 m)",
+                                                     "not drawn yet (the longest S-1 run has reached 16.20 m",
+                                                     f"drawn in docs/validation/{PROFILE_PLOT}")):
+        if needle not in line:
+            sys.exit(f"FAIL: S-1's profile, {case}: {needle!r} not in {line!r}")
     print("OK: phase2_table rescales to alpha = 0.63, judges only the rule's windows, and checks seeds and "
           "strip against full width over the span the runs share, as worked out by hand")
 

@@ -142,6 +142,10 @@ def phase2_table(root):
 
 WINDOW_BY = 8.0  # [m] issue #31: the steady window must start before this pushed length
 PROFILE_AT = 16.0  # [m] the pushed length of the paper's Fig. 15 (strong ice's rubble profile)
+# The picture of that profile in the runs folder, drawn from the S-1 run's snapshot at PROFILE_AT
+# (`thin_ice probe profiles`, then `scripts/study plot_side_view --profiles`); a run record keeps
+# no snapshots or profiles.csv, so the picture and its numbers are kept beside the records.
+PROFILE_PLOT = "phase2_S-1_16m_side.png"
 EARLY = 2.0  # [m] a window starting this soon comes before a pile has grown (the experiments' phase 1 lasts ~5 m)
 
 
@@ -202,7 +206,14 @@ def targets(root):
                   f"({'met' if sum(weak) / len(weak) > sum(medium) / len(medium) else 'missed'})"
                   if weak and medium else "not judged (no weak and medium run both with a window)") + ".")
     strong = max((s[run_record.PUSHED_LENGTH] for k, s in summaries.items() if k[0] == "S-1"), default=None)
-    lines.append(f"- S-1's rubble profile at L = {PROFILE_AT:g} m beside the paper's Fig. 15: "
-                 + (f"not yet (the longest S-1 run has reached {strong:.2f} m)" if strong is None or strong < PROFILE_AT
-                    else "see the run's profiles.csv") + ".")
+    if strong is None or strong < PROFILE_AT:
+        profile = "not yet (" + ("no S-1 run" if strong is None else f"the longest S-1 run has reached {strong:.2f} m") + ")"
+    elif os.path.exists(os.path.join(root, PROFILE_PLOT)):
+        profile = (f"drawn in docs/validation/{PROFILE_PLOT} (the side and top profiles over the cells); the paper "
+                   "gives the experiment's profile as a picture only, with no coordinates")
+    else:
+        profile = (f"not drawn yet (the longest S-1 run has reached {strong:.2f} m: `thin_ice probe profiles` on its "
+                   f"snapshot at {PROFILE_AT:g} m, then `scripts/study plot_side_view --profiles`, into "
+                   f"docs/validation/{PROFILE_PLOT})")
+    lines.append(f"- S-1's rubble profile at L = {PROFILE_AT:g} m beside the paper's Fig. 15: {profile}.")
     return lines + [""]
